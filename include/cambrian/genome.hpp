@@ -1,0 +1,186 @@
+// cambrian: the Sims / Minemonics directed-graph genome.
+//
+// Nodes are classes of body parts, connections are classes of joints. Development
+// (develop/) walks the graph from the root node to make a BodyPlan. See docs/genome.md.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cambrian/math.hpp"
+
+namespace cambrian {
+
+//---------------------------------------------------------------- enumerations
+
+/// How a part is jointed to its parent; the number of degrees of freedom follows.
+enum class JointType : std::uint8_t { rigid = 0, revolute = 1, universal = 2, spherical = 3 };
+
+/// Degrees of freedom of a joint type: 0, 1, 2 or 3.
+inline int degreesOfFreedom(JointType type) { return static_cast<int>(type); }
+
+/// Part shapes. Boxes only for now; the enum keeps the format open.
+enum class PartShape : std::uint8_t { box = 0 };
+
+/// Neuron functions: Sims (1994) set plus constant. Arity is neuronArity().
+enum class NeuronFunction : std::uint8_t {
+  constant = 0,
+  sum,
+  product,
+  divide,
+  sum_threshold,
+  greater_than,
+  sign_of,
+  min,
+  max,
+  abs,
+  if_positive,  ///< Sims' "if": input 0 > 0 ? input 1 : input 2
+  interpolate,
+  sin,
+  cos,
+  atan,
+  log,
+  expt,
+  sigmoid,
+  integrate,
+  differentiate,
+  smooth,
+  memory,
+  oscillate_wave,
+  oscillate_saw,
+  count_  ///< number of functions; not a function
+};
+
+/// Number of inputs a neuron function reads (0..3).
+int neuronArity(NeuronFunction function);
+/// Lower-case name used by the text form ("sum_threshold", "oscillate_wave", ...).
+const char* neuronFunctionName(NeuronFunction function);
+
+/// Where a neuron or effector input reads its signal from.
+enum class SignalSource : std::uint8_t {
+  constant = 0,   ///< the input's weight is the value
+  local_sensor,   ///< a sensor of this part (index modulo the part's sensor count)
+  local_neuron,   ///< a neuron of this part
+  parent_neuron,  ///< a neuron of the parent part instance (constant 0 at the root)
+  child_neuron,   ///< a neuron of the child made through connection `slot` (0 if absent)
+  brain_neuron,   ///< a neuron of the global brain
+  brain_sensor,   ///< a whole-creature sensor (photosensor toward the target)
+};
+
+//---------------------------------------------------------------- genes
+
+/// One weighted input wire. Indices are taken modulo the size of the list they point into at
+/// development time, so every genome develops; `slot` is only used by child_neuron.
+struct NeuronInput {
+  SignalSource source = SignalSource::constant;
+  std::uint16_t slot = 0;
+  std::uint16_t index = 0;
+  double weight = 0;
+  friend bool operator==(const NeuronInput&, const NeuronInput&) = default;
+};
+
+/// A neuron class: function, inputs (only the first neuronArity() are read) and a parameter
+/// (oscillator frequency in Hz, smoothing rate, threshold; meaning per function in docs/genome.md).
+struct NeuronGene {
+  NeuronFunction function = NeuronFunction::sum;
+  std::vector<NeuronInput> inputs;
+  double parameter = 0;
+  friend bool operator==(const NeuronGene&, const NeuronGene&) = default;
+};
+
+/// Drives one degree of freedom of the joint to the parent: torque = strength * clamp(input, -1, 1).
+struct EffectorGene {
+  NeuronInput input;
+  friend bool operator==(const EffectorGene&, const EffectorGene&) = default;
+};
+
+/// Minemonics' per-joint controller: a sine added to each effector of the joint it drives.
+struct JointControllerGene {
+  bool enabled = false;
+  double amplitude = 0;  ///< in effector units (-1..1)
+  double frequency = 1;  ///< Hz
+  double phase = 0;      ///< radians
+  double offset = 0;     ///< effector units
+  friend bool operator==(const JointControllerGene&, const JointControllerGene&) = default;
+};
+
+/// A class of body parts (a graph node).
+struct PartGene {
+  PartShape shape = PartShape::box;
+  Vec3 dimensions{0.2, 0.2, 0.2};  ///< full box size, metres
+  double density = 1000;           ///< kg / m^3
+  JointType joint_type = JointType::revolute;  ///< joint to the parent (ignored at the root)
+  Vec3 joint_limit{1, 1, 1};  ///< symmetric limit per degree of freedom, radians (0..pi)
+  std::uint8_t recursive_limit = 1;  ///< how many times this node may repeat along a path (>= 1)
+  std::vector<NeuronGene> neurons;     ///< local neurons, copied into every instance
+  std::vector<EffectorGene> effectors;  ///< one per degree of freedom; extra ones are ignored
+  friend bool operator==(const PartGene&, const PartGene&) = default;
+};
+
+/// A class of joints (a graph edge) from node `from` to node `to`.
+struct ConnectionGene {
+  std::uint16_t from = 0;
+  std::uint16_t to = 0;
+  Vec3 position{1, 0, 0};     ///< attachment on the parent, each in [-1, 1], projected on its surface
+  Vec3 orientation{0, 0, 0};  ///< Euler angles (roll, pitch, yaw) of the child, radians
+  double scale = 1;           ///< child size multiplier, compounding along the path
+  std::uint8_t reflection = 0;  ///< bit 0: mirror x, bit 1: mirror y, bit 2: mirror z
+  bool terminal_only = false;   ///< only applied when the recursive limit of `from` is reached
+  JointControllerGene controller;
+  friend bool operator==(const ConnectionGene&, const ConnectionGene&) = default;
+};
+
+/// The whole genome. Node 0 is the root.
+struct Genome {
+  std::vector<PartGene> nodes;
+  std::vector<ConnectionGene> connections;
+  std::vector<NeuronGene> brain;  ///< global neurons, instantiated once per creature
+  friend bool operator==(const Genome&, const Genome&) = default;
+};
+
+/// Limits that keep creatures finite. Defaults follow Chaumont et al. and Sims.
+struct GenomeLimits {
+  int max_nodes = 20;             ///< genes (graph nodes)
+  int max_connections = 40;       ///< connections in the graph
+  int max_parts = 30;             ///< part instances after development
+  int max_recursive_limit = 4;    ///< per node
+  int max_neurons_per_node = 6;
+  int max_brain_neurons = 8;
+  int max_inputs = 3;              ///< inputs stored per neuron
+  double min_part_size = 0.05;    ///< metres, any box side after development
+  double max_part_size = 1.5;     ///< metres, any box side after development
+  double min_density = 200, max_density = 3000;  ///< kg / m^3
+  double max_weight = 5;          ///< |weight| of an input
+  double max_scale = 2, min_scale = 0.5;
+  double max_frequency = 4;       ///< Hz, oscillators and joint controllers
+};
+
+//---------------------------------------------------------------- operations
+
+/// A random genome within `limits`, drawn from `rng`-compatible stream (seed, generation, individual).
+Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_t generation = 0,
+                    std::uint64_t individual = 0);
+
+/// Checks structure and ranges; throws GenomeError naming the gene and field.
+void validateGenome(const Genome& genome, const GenomeLimits& limits);
+
+/// Current version of the byte format. Readers accept this and older versions.
+constexpr std::uint32_t kGenomeFormatVersion = 1;
+
+/// Versioned little-endian byte serialization (what MPI messages and HDF5 files carry).
+std::vector<std::uint8_t> serializeGenome(const Genome& genome);
+/// Inverse of serializeGenome; throws InputError naming the field on truncated or bad bytes.
+Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size);
+
+/// Readable text form (docs/genome.md); exact: parseGenomeText(genomeToText(g)) == g.
+std::string genomeToText(const Genome& genome);
+/// Parses the text form; throws InputError naming `source`, the line and the field.
+Genome parseGenomeText(const std::string& text, const std::string& source = "<text>");
+
+/// Reads a genome file, text or binary (detected by the magic bytes); errors name the file.
+Genome readGenomeFile(const std::string& path);
+/// Writes the text form atomically (temporary file, rename).
+void writeGenomeFile(const std::string& path, const Genome& genome);
+
+}  // namespace cambrian

@@ -1,0 +1,39 @@
+// cambrian: genetic operators on the directed-graph genome (Sims 1994, Chaumont et al. 2007).
+#pragma once
+
+#include "cambrian/genome.hpp"
+#include "cambrian/rng.hpp"
+
+namespace cambrian {
+
+/// How mutation behaves. Rates are per mutable parameter or per structural opportunity.
+struct MutationSettings {
+  double parameter_rate = 0.10;  ///< chance each parameter is perturbed (Chaumont: 10 %)
+  double perturbation = 0.25;    ///< perturbation scale, as a fraction of the parameter's range
+  double add_node_rate = 0.05;   ///< chance to add a random node (and a connection to it)
+  double remove_node_rate = 0.03;
+  double add_connection_rate = 0.05;
+  double remove_connection_rate = 0.03;
+  double repoint_rate = 0.05;    ///< chance each connection is re-pointed to another node
+  double add_neuron_rate = 0.05;
+  double remove_neuron_rate = 0.03;
+  bool keep_unconnected = true;  ///< keep nodes unreachable from the root (Chaumont) or collect them
+};
+
+/// Sims' mutation: parameter perturbation scaled to each parameter's range, node and connection
+/// insertion and removal, re-pointing, neuron insertion and removal. Result is valid under limits.
+Genome mutate(const Genome& parent, const GenomeLimits& limits, const MutationSettings& settings,
+              Rng& rng);
+
+/// Sims' crossover: nodes of both parents aligned by index, copied from one parent and then the
+/// other at crossover points. Result is valid under limits.
+Genome crossover(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& rng);
+
+/// Sims' grafting: a copy of `a` with one of its connections re-pointed into a copy of `b`'s
+/// graph appended to it. Result is valid under limits.
+Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& rng);
+
+/// Removes nodes unreachable from the root, renumbering connections.
+Genome removeUnreachableNodes(const Genome& genome);
+
+}  // namespace cambrian
