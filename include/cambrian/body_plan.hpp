@@ -34,7 +34,8 @@ struct PartPlan {
   Quat parent_to_child;  ///< this part's frame relative to the parent's frame
   std::array<Vec3, 3> axes{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  ///< in this part's frame
   Vec3 joint_limit;   ///< symmetric limit per degree of freedom, radians
-  double strength = 0;  ///< maximum torque, N m (proportional to the smaller cross-section)
+  double cross_section = 0;  ///< m^2, smaller of the two faces meeting at the joint; physics
+                             ///< turns it into the joint's maximum torque
   bool reflected = false;  ///< made through a reflected connection
 };
 

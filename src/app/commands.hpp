@@ -1,0 +1,13 @@
+// cambrian: the subcommands main() dispatches to. Each returns a process exit code.
+#pragma once
+
+namespace cambrian {
+
+/// `cambrian simulate`: evaluates one creature and prints its outcome.
+int runSimulate(int argc, char** argv);
+/// `cambrian inspect FILE`: prints a genome and its body statistics.
+int runInspect(int argc, char** argv);
+/// `cambrian evolve`: the MPI evolution (rank 0 breeds, other ranks evaluate).
+int runEvolve(int argc, char** argv);
+
+}  // namespace cambrian
