@@ -1,0 +1,107 @@
+// tests of `cambrian simulate` and `cambrian inspect` through the executable
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "app/cli.hpp"
+#include "cambrian/error.hpp"
+
+namespace cambrian {
+namespace {
+
+using test::lineStartingWith;
+using test::runCambrian;
+
+const std::string kCreatures = std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/";
+const std::string kShort = " --task.evaluation_time 2";
+
+int code(ExitCode c) { return static_cast<int>(c); }
+
+// a hand-written creature is evaluated and its outcome printed
+TEST(SimulateCommand, PrintsOutcome) {
+  auto result = runCambrian("simulate --genome " + kCreatures + "walker4.genome" + kShort);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("status     ok"), std::string::npos) << result.output;
+  EXPECT_NE(lineStartingWith(result.output, "fitness"), "");
+  EXPECT_NE(lineStartingWith(result.output, "distance"), "");
+  EXPECT_NE(lineStartingWith(result.output, "steps"), "");
+}
+
+// two separate processes give bit-identical outcomes (fitness printed with 17 digits)
+TEST(SimulateCommand, DeterministicAcrossProcesses) {
+  for (const std::string& creature : {"--genome " + kCreatures + "walker4.genome",
+                                      std::string("--random --seed 11"),
+                                      std::string("--random --seed 12")}) {
+    auto a = runCambrian("simulate " + creature + kShort);
+    auto b = runCambrian("simulate " + creature + kShort);
+    ASSERT_EQ(a.exit_code, 0) << a.output;
+    EXPECT_EQ(lineStartingWith(a.output, "fitness"), lineStartingWith(b.output, "fitness"));
+    EXPECT_EQ(lineStartingWith(a.output, "status"), lineStartingWith(b.output, "status"));
+    EXPECT_EQ(lineStartingWith(a.output, "steps"), lineStartingWith(b.output, "steps"));
+  }
+}
+
+// a settings file is read, and the command line wins over it
+TEST(SimulateCommand, ConfigFileAndOverride) {
+  std::string path = std::string(CAMBRIAN_BINARY_DIR) + "/simulate_test.ini";
+  std::ofstream(path) << "[task]\nevaluation_time = 1\n[physics]\ntime_step = 0.005\n";
+  auto from_file = runCambrian("simulate --random --seed 3 --config " + path);
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.output;
+  EXPECT_NE(from_file.output.find("1 s measured, step 0.005 s"), std::string::npos)
+      << from_file.output;
+  auto overridden =
+      runCambrian("simulate --random --seed 3 --config " + path + " --task.evaluation_time 2");
+  EXPECT_NE(overridden.output.find("2 s measured"), std::string::npos) << overridden.output;
+}
+
+// bad input: a clear message and the documented exit code
+TEST(SimulateCommand, BadInput) {
+  auto unknown = runCambrian("simulate --random --bogus 3");
+  EXPECT_EQ(unknown.exit_code, code(ExitCode::usage));
+  EXPECT_NE(unknown.output.find("bogus"), std::string::npos) << unknown.output;
+
+  auto range = runCambrian("simulate --random --physics.time_step -1");
+  EXPECT_EQ(range.exit_code, code(ExitCode::config));
+  EXPECT_NE(range.output.find("physics.time_step = -1"), std::string::npos) << range.output;
+
+  auto wrong_type = runCambrian("simulate --random --task.evaluation_time ten");
+  EXPECT_NE(wrong_type.exit_code, 0);
+  EXPECT_NE(wrong_type.output.find("evaluation_time"), std::string::npos) << wrong_type.output;
+
+  auto missing = runCambrian("simulate --genome /nonexistent/x.genome");
+  EXPECT_EQ(missing.exit_code, code(ExitCode::input_file));
+  EXPECT_NE(missing.output.find("/nonexistent/x.genome"), std::string::npos) << missing.output;
+
+  std::string bad_ini = std::string(CAMBRIAN_BINARY_DIR) + "/simulate_bad.ini";
+  std::ofstream(bad_ini) << "[physics]\nwarp_drive = 9\n";
+  auto unknown_key = runCambrian("simulate --random --config " + bad_ini);
+  EXPECT_EQ(unknown_key.exit_code, code(ExitCode::config));
+  EXPECT_NE(unknown_key.output.find(bad_ini), std::string::npos) << unknown_key.output;
+  EXPECT_NE(unknown_key.output.find("warp_drive"), std::string::npos) << unknown_key.output;
+
+  std::string truncated = std::string(CAMBRIAN_BINARY_DIR) + "/truncated.genome";
+  std::ofstream(truncated, std::ios::binary) << "CMBG\x01";
+  auto broken = runCambrian("simulate --genome " + truncated);
+  EXPECT_EQ(broken.exit_code, code(ExitCode::input_file));
+  EXPECT_NE(broken.output.find(truncated), std::string::npos) << broken.output;
+}
+
+// every subcommand has --help
+TEST(SimulateCommand, Help) {
+  for (const char* command : {"simulate --help", "inspect --help", "--help"}) {
+    auto result = runCambrian(command);
+    EXPECT_EQ(result.exit_code, 0) << command;
+    EXPECT_NE(result.output.find("usage"), std::string::npos) << command;
+  }
+}
+
+// inspect prints the genome text and the body statistics
+TEST(InspectCommand, PrintsGenomeAndBody) {
+  auto result = runCambrian("inspect " + kCreatures + "walker4.genome");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("cambrian-genome"), std::string::npos);
+  EXPECT_NE(result.output.find("# body: 5 parts, 4 joints"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace cambrian

@@ -1,0 +1,132 @@
+#include "physics/simulation.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace cambrian {
+namespace {
+
+// a box part at `position` (creature frame)
+PartPlan box(Vec3 size, Vec3 position, int parent = -1) {
+  PartPlan part;
+  part.size = size;
+  part.mass = 1000 * size.x * size.y * size.z;
+  part.pose.position = position;
+  part.parent = parent;
+  return part;
+}
+
+// one block with a contact sensor
+BodyPlan singleBlock() {
+  BodyPlan plan;
+  plan.parts.push_back(box({0.2, 0.2, 0.2}, {0, 0, 0}));
+  plan.sensors.push_back({SensorKind::contact, 0, 0});
+  return plan;
+}
+
+// a root block and a hinged child on its +x face; effector 0 reads neuron 0 (a constant)
+BodyPlan hinged(double command) {
+  BodyPlan plan;
+  plan.parts.push_back(box({0.4, 0.2, 0.1}, {0, 0, 0}));
+  PartPlan child = box({0.3, 0.1, 0.1}, {0.35, 0, 0}, 0);
+  child.joint = JointType::revolute;
+  child.pivot_in_parent = {0.2, 0, 0};
+  child.pivot_in_child = {-0.15, 0, 0};
+  child.joint_limit = {1.0, 1.0, 1.0};
+  child.cross_section = 0.01;
+  child.connection = 0;
+  plan.parts.push_back(child);
+  plan.sensors.push_back({SensorKind::joint_angle, 1, 0});
+  plan.sensors.push_back({SensorKind::contact, 0, 0});
+  plan.sensors.push_back({SensorKind::contact, 1, 0});
+  NeuronPlan constant;
+  constant.function = NeuronFunction::constant;
+  constant.parameter = command;
+  plan.neurons.push_back(constant);
+  EffectorPlan effector;
+  effector.part = 1;
+  effector.dof = 0;
+  effector.input = {plan.neuronSignal(0), 1.0};
+  plan.effectors.push_back(effector);
+  return plan;
+}
+
+// a dropped block falls, lands and comes to rest on the ground
+TEST(Simulation, DroppedBlockComesToRest) {
+  BodyPlan plan = singleBlock();
+  PhysicsSettings settings;
+  Simulation simulation(plan, settings, {10, 0, 0}, 0.5);
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  EXPECT_NEAR(simulation.lowestPoint(), 0.5, 1e-9);
+  for (int s = 0; s < 480; ++s) simulation.step(false);
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  Vec3 before = simulation.centerOfMass();
+  for (int s = 0; s < 240; ++s) simulation.step(false);
+  Vec3 after = simulation.centerOfMass();
+  EXPECT_NEAR(simulation.lowestPoint(), 0.0, 2e-3);
+  EXPECT_NEAR(after.z, 0.1, 2e-3);
+  EXPECT_LT(norm(after - before), 1e-4);
+  EXPECT_EQ(simulation.partContacts()[0], 1);
+}
+
+// a creature is born resting on the ground, not above or inside it
+TEST(Simulation, BornOnTheGround) {
+  BodyPlan plan = hinged(0);
+  Simulation simulation(plan, PhysicsSettings{});
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  EXPECT_NEAR(simulation.lowestPoint(), 0.0, 1e-12);
+}
+
+// parts that overlap at birth are rejected with a status, not simulated
+TEST(Simulation, SelfPenetrationAtBirth) {
+  BodyPlan plan = hinged(0);
+  PartPlan twin = plan.parts[1];
+  plan.parts.push_back(twin);  // a sibling exactly where the first child is
+  Simulation simulation(plan, PhysicsSettings{});
+  EXPECT_EQ(simulation.status(), EvalStatus::self_penetration);
+  EXPECT_NE(simulation.message().find("overlap"), std::string::npos);
+  simulation.step(true);
+  EXPECT_EQ(simulation.steps(), 0u);
+}
+
+// a driven joint moves the child, and the joint-angle sensor reports it
+TEST(Simulation, EffectorMovesJoint) {
+  BodyPlan plan = hinged(1.0);
+  PhysicsSettings settings;
+  Simulation simulation(plan, settings);
+  for (int s = 0; s < 240; ++s) simulation.step(true);
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  EXPECT_GT(std::abs(simulation.brain().signals()[0]), 0.05);
+}
+
+// an absurdly strong joint breaks the physics and is caught as a status, not a crash
+TEST(Simulation, ExplosionIsCaught) {
+  BodyPlan plan = hinged(1.0);
+  PhysicsSettings settings;
+  settings.strength_per_area = 1e12;
+  Simulation simulation(plan, settings);
+  for (int s = 0; s < 2400 && simulation.status() == EvalStatus::ok; ++s) simulation.step(true);
+  EXPECT_TRUE(simulation.status() == EvalStatus::exploded ||
+              simulation.status() == EvalStatus::non_finite)
+      << statusName(simulation.status());
+}
+
+// the same plan simulated twice in one process gives bit-identical states
+TEST(Simulation, Deterministic) {
+  BodyPlan plan = hinged(0.7);
+  std::vector<Transform> first, second;
+  for (auto* poses : {&first, &second}) {
+    Simulation simulation(plan, PhysicsSettings{});
+    for (int s = 0; s < 500; ++s) simulation.step(true);
+    simulation.partPoses(*poses);
+  }
+  ASSERT_EQ(first.size(), second.size());
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    EXPECT_EQ(first[i].position, second[i].position);
+    EXPECT_EQ(first[i].rotation, second[i].rotation);
+  }
+}
+
+}  // namespace
+}  // namespace cambrian
