@@ -39,11 +39,30 @@ int neuronArity(NeuronFunction function) {
 }
 
 const char* neuronFunctionName(NeuronFunction function) {
-  static constexpr const char* kNames[] = {
-      "constant", "sum",   "product", "divide",    "sum_threshold", "greater_than",
-      "sign_of",  "min",   "max",     "abs",       "if",            "interpolate",
-      "sin",      "cos",   "atan",    "log",       "expt",          "sigmoid",
-      "integrate", "differentiate", "smooth", "memory", "oscillate_wave", "oscillate_saw"};
+  static constexpr const char* kNames[] = {"constant",
+                                           "sum",
+                                           "product",
+                                           "divide",
+                                           "sum_threshold",
+                                           "greater_than",
+                                           "sign_of",
+                                           "min",
+                                           "max",
+                                           "abs",
+                                           "if",
+                                           "interpolate",
+                                           "sin",
+                                           "cos",
+                                           "atan",
+                                           "log",
+                                           "expt",
+                                           "sigmoid",
+                                           "integrate",
+                                           "differentiate",
+                                           "smooth",
+                                           "memory",
+                                           "oscillate_wave",
+                                           "oscillate_saw"};
   static_assert(sizeof(kNames) / sizeof(kNames[0]) ==
                 static_cast<std::size_t>(NeuronFunction::count_));
   auto i = static_cast<std::size_t>(function);

@@ -1,0 +1,24 @@
+// cambrian: random genes, shared by randomGenome and the mutation operators.
+#pragma once
+
+#include "cambrian/genome.hpp"
+#include "cambrian/rng.hpp"
+
+namespace cambrian {
+
+/// A random input wire: any source, small slot and index, |weight| <= min(2, max_weight).
+NeuronInput randomNeuronInput(const GenomeLimits& limits, Rng& rng);
+
+/// A random neuron of any function with min(arity, max_inputs) random inputs.
+NeuronGene randomNeuronGene(const GenomeLimits& limits, Rng& rng);
+
+/// A random part gene of moderate size: any joint type, 0..3 neurons (within limits), one
+/// effector per degree of freedom, usually wired to one of its neurons.
+PartGene randomPartGene(const GenomeLimits& limits, Rng& rng);
+
+/// A random connection from -> to: position anywhere, moderate orientation and scale,
+/// reflection sometimes, terminal-only and joint controller sometimes.
+ConnectionGene randomConnectionGene(std::uint16_t from, std::uint16_t to,
+                                    const GenomeLimits& limits, Rng& rng);
+
+}  // namespace cambrian

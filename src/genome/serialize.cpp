@@ -1,0 +1,271 @@
+// cambrian: the versioned little-endian byte form of a genome ("CMBG", version, counts, fields).
+#include "cambrian/error.hpp"
+#include "cambrian/genome.hpp"
+
+#include <bit>
+#include <cstring>
+#include <string>
+
+namespace cambrian {
+namespace {
+
+constexpr char kMagic[4] = {'C', 'M', 'B', 'G'};
+
+// smallest encoded sizes, used to reject counts the remaining bytes cannot hold
+constexpr std::size_t kInputBytes = 1 + 2 + 2 + 8;
+constexpr std::size_t kNeuronBytes = 1 + 8 + 4;
+constexpr std::size_t kEffectorBytes = kInputBytes;
+constexpr std::size_t kNodeBytes = 1 + 24 + 8 + 1 + 24 + 1 + 4 + 4;
+constexpr std::size_t kConnectionBytes = 2 + 2 + 24 + 24 + 8 + 1 + 1 + 1 + 32;
+
+// appends little-endian values to a byte vector
+class Writer {
+ public:
+  explicit Writer(std::vector<std::uint8_t>& out) : out_(out) {}
+  void u8(std::uint8_t v) { out_.push_back(v); }
+  void u16(std::uint16_t v) { unsigned_le(v, 2); }
+  void u32(std::uint32_t v) { unsigned_le(v, 4); }
+  void f64(double v) { unsigned_le(std::bit_cast<std::uint64_t>(v), 8); }
+  void vec3(const Vec3& v) {
+    f64(v.x);
+    f64(v.y);
+    f64(v.z);
+  }
+  void count(std::size_t n) { u32(static_cast<std::uint32_t>(n)); }
+
+ private:
+  void unsigned_le(std::uint64_t v, int bytes) {
+    for (int i = 0; i < bytes; ++i)
+      out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
+  std::vector<std::uint8_t>& out_;
+};
+
+// reads little-endian values with bounds checks; errors name the current field and offset
+class Reader {
+ public:
+  Reader(const std::uint8_t* bytes, std::size_t size) : bytes_(bytes), size_(size) {}
+
+  /// What is being read, for messages ("node 2 neurons").
+  void context(std::string what) { context_ = std::move(what); }
+  std::size_t remaining() const { return size_ - offset_; }
+
+  std::uint8_t u8() { return static_cast<std::uint8_t>(unsignedLe(1)); }
+  std::uint16_t u16() { return static_cast<std::uint16_t>(unsignedLe(2)); }
+  std::uint32_t u32() { return static_cast<std::uint32_t>(unsignedLe(4)); }
+  double f64() { return std::bit_cast<double>(unsignedLe(8)); }
+  Vec3 vec3() {
+    Vec3 v;
+    v.x = f64();
+    v.y = f64();
+    v.z = f64();
+    return v;
+  }
+  bool flag(const char* field) {
+    std::size_t at = offset_;
+    std::uint8_t v = u8();
+    if (v > 1) {
+      throw InputError("genome bytes: " + context_ + " " + field + " is " + std::to_string(v) +
+                       ", expected 0 or 1 (offset " + std::to_string(at) + " of " +
+                       std::to_string(size_) + ")");
+    }
+    return v == 1;
+  }
+  // a count whose elements (each at least `element_bytes`) must fit in the remaining bytes
+  std::size_t count(std::size_t element_bytes) {
+    std::size_t at = offset_;
+    std::uint32_t n = u32();
+    if (static_cast<std::uint64_t>(n) * element_bytes > remaining()) {
+      throw InputError("genome bytes: truncated in " + context_ + " (count " + std::to_string(n) +
+                       " at offset " + std::to_string(at) + " needs more than the " +
+                       std::to_string(remaining()) + " bytes left of " + std::to_string(size_) +
+                       ")");
+    }
+    return n;
+  }
+  void expectEnd() {
+    if (offset_ == size_)
+      return;
+    throw InputError("genome bytes: " + std::to_string(size_ - offset_) +
+                     " unexpected bytes after the genome (offset " + std::to_string(offset_) +
+                     " of " + std::to_string(size_) + ")");
+  }
+
+ private:
+  std::uint64_t unsignedLe(int bytes) {
+    if (remaining() < static_cast<std::size_t>(bytes)) {
+      throw InputError("genome bytes: truncated in " + context_ + " (offset " +
+                       std::to_string(offset_) + " of " + std::to_string(size_) + ")");
+    }
+    std::uint64_t v = 0;
+    for (int i = 0; i < bytes; ++i)
+      v |= static_cast<std::uint64_t>(bytes_[offset_ + i]) << (8 * i);
+    offset_ += static_cast<std::size_t>(bytes);
+    return v;
+  }
+  const std::uint8_t* bytes_;
+  std::size_t size_;
+  std::size_t offset_ = 0;
+  std::string context_ = "header";
+};
+
+// writers for each gene
+void writeInput(Writer& w, const NeuronInput& input) {
+  w.u8(static_cast<std::uint8_t>(input.source));
+  w.u16(input.slot);
+  w.u16(input.index);
+  w.f64(input.weight);
+}
+
+void writeNeurons(Writer& w, const std::vector<NeuronGene>& neurons) {
+  w.count(neurons.size());
+  for (const NeuronGene& neuron : neurons) {
+    w.u8(static_cast<std::uint8_t>(neuron.function));
+    w.f64(neuron.parameter);
+    w.count(neuron.inputs.size());
+    for (const NeuronInput& input : neuron.inputs)
+      writeInput(w, input);
+  }
+}
+
+// readers for each gene, mirroring the writers
+NeuronInput readInput(Reader& r) {
+  NeuronInput input;
+  input.source = static_cast<SignalSource>(r.u8());
+  input.slot = r.u16();
+  input.index = r.u16();
+  input.weight = r.f64();
+  return input;
+}
+
+std::vector<NeuronGene> readNeurons(Reader& r, const std::string& where) {
+  r.context(where + " neurons");
+  std::vector<NeuronGene> neurons(r.count(kNeuronBytes));
+  for (std::size_t i = 0; i < neurons.size(); ++i) {
+    r.context(where + " neuron " + std::to_string(i));
+    neurons[i].function = static_cast<NeuronFunction>(r.u8());
+    neurons[i].parameter = r.f64();
+    neurons[i].inputs.resize(r.count(kInputBytes));
+    for (NeuronInput& input : neurons[i].inputs)
+      input = readInput(r);
+  }
+  return neurons;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
+  std::vector<std::uint8_t> out;
+  Writer w(out);
+
+  // header
+  for (char c : kMagic)
+    w.u8(static_cast<std::uint8_t>(c));
+  w.u32(kGenomeFormatVersion);
+
+  // nodes
+  w.count(genome.nodes.size());
+  for (const PartGene& node : genome.nodes) {
+    w.u8(static_cast<std::uint8_t>(node.shape));
+    w.vec3(node.dimensions);
+    w.f64(node.density);
+    w.u8(static_cast<std::uint8_t>(node.joint_type));
+    w.vec3(node.joint_limit);
+    w.u8(node.recursive_limit);
+    writeNeurons(w, node.neurons);
+    w.count(node.effectors.size());
+    for (const EffectorGene& effector : node.effectors)
+      writeInput(w, effector.input);
+  }
+
+  // connections
+  w.count(genome.connections.size());
+  for (const ConnectionGene& c : genome.connections) {
+    w.u16(c.from);
+    w.u16(c.to);
+    w.vec3(c.position);
+    w.vec3(c.orientation);
+    w.f64(c.scale);
+    w.u8(c.reflection);
+    w.u8(c.terminal_only ? 1 : 0);
+    w.u8(c.controller.enabled ? 1 : 0);
+    w.f64(c.controller.amplitude);
+    w.f64(c.controller.frequency);
+    w.f64(c.controller.phase);
+    w.f64(c.controller.offset);
+  }
+
+  // brain
+  writeNeurons(w, genome.brain);
+  return out;
+}
+
+Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
+  if (bytes == nullptr && size > 0)
+    throw InputError("genome bytes: null buffer");
+  Reader r(bytes, size);
+
+  // header: magic and version
+  if (size < sizeof(kMagic) || std::memcmp(bytes, kMagic, sizeof(kMagic)) != 0) {
+    throw InputError("genome bytes: not a cambrian genome (bad magic)");
+  }
+  for (std::size_t i = 0; i < sizeof(kMagic); ++i)
+    r.u8();
+  r.context("header version");
+  std::uint32_t version = r.u32();
+  if (version > kGenomeFormatVersion) {
+    throw InputError("genome bytes: format version " + std::to_string(version) +
+                     " is newer than this cambrian (" + std::to_string(kGenomeFormatVersion) + ")");
+  }
+  if (version == 0)
+    throw InputError("genome bytes: format version 0 does not exist");
+
+  // nodes
+  Genome genome;
+  r.context("node count");
+  genome.nodes.resize(r.count(kNodeBytes));
+  for (std::size_t i = 0; i < genome.nodes.size(); ++i) {
+    std::string where = "node " + std::to_string(i);
+    PartGene& node = genome.nodes[i];
+    r.context(where);
+    node.shape = static_cast<PartShape>(r.u8());
+    node.dimensions = r.vec3();
+    node.density = r.f64();
+    node.joint_type = static_cast<JointType>(r.u8());
+    node.joint_limit = r.vec3();
+    node.recursive_limit = r.u8();
+    node.neurons = readNeurons(r, where);
+    r.context(where + " effectors");
+    node.effectors.resize(r.count(kEffectorBytes));
+    for (EffectorGene& effector : node.effectors)
+      effector.input = readInput(r);
+  }
+
+  // connections
+  r.context("connection count");
+  genome.connections.resize(r.count(kConnectionBytes));
+  for (std::size_t i = 0; i < genome.connections.size(); ++i) {
+    ConnectionGene& c = genome.connections[i];
+    r.context("connection " + std::to_string(i));
+    c.from = r.u16();
+    c.to = r.u16();
+    c.position = r.vec3();
+    c.orientation = r.vec3();
+    c.scale = r.f64();
+    c.reflection = r.u8();
+    c.terminal_only = r.flag("terminal_only");
+    c.controller.enabled = r.flag("controller.enabled");
+    c.controller.amplitude = r.f64();
+    c.controller.frequency = r.f64();
+    c.controller.phase = r.f64();
+    c.controller.offset = r.f64();
+  }
+
+  // brain, then nothing
+  genome.brain = readNeurons(r, "brain");
+  r.context("end");
+  r.expectEnd();
+  return genome;
+}
+
+}  // namespace cambrian

@@ -1,0 +1,514 @@
+// cambrian: the readable, line-oriented text form of a genome (grammar in docs/genome.md).
+#include "cambrian/error.hpp"
+#include "cambrian/genome.hpp"
+
+#include "gene_ranges.hpp"
+#include "number_text.hpp"
+
+#include <charconv>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cambrian {
+namespace {
+
+constexpr const char* kHeader = "cambrian-genome";
+
+constexpr const char* kJointNames[] = {"rigid", "revolute", "universal", "spherical"};
+constexpr const char* kShapeNames[] = {"box"};
+constexpr const char* kSourceNames[] = {"constant",      "local_sensor", "local_neuron",
+                                        "parent_neuron", "child_neuron", "brain_neuron",
+                                        "brain_sensor"};
+static_assert(sizeof(kSourceNames) / sizeof(kSourceNames[0]) == kSignalSourceCount);
+
+//---------------------------------------------------------------- writing
+
+// an enumeration's name, or its number when out of range (so any genome round-trips)
+std::string enumText(int value, const char* const* names, int count) {
+  if (value >= 0 && value < count)
+    return names[value];
+  return std::to_string(value);
+}
+
+std::string functionText(NeuronFunction function) {
+  int value = static_cast<int>(function);
+  if (value < kNeuronFunctionCount)
+    return neuronFunctionName(function);
+  return std::to_string(value);
+}
+
+std::string vec3Text(const Vec3& v) {
+  return formatNumber(v.x) + " " + formatNumber(v.y) + " " + formatNumber(v.z);
+}
+
+std::string inputText(const NeuronInput& input) {
+  return enumText(static_cast<int>(input.source), kSourceNames, kSignalSourceCount) + " " +
+         std::to_string(input.slot) + " " + std::to_string(input.index) + " " +
+         formatNumber(input.weight);
+}
+
+std::string reflectionText(std::uint8_t bits) {
+  if ((bits & ~kReflectionMask) != 0)
+    return std::to_string(bits);
+  std::string text;
+  if (bits & 1)
+    text += 'x';
+  if (bits & 2)
+    text += 'y';
+  if (bits & 4)
+    text += 'z';
+  return text.empty() ? "none" : text;
+}
+
+void writeNeuron(std::ostringstream& out, const NeuronGene& neuron) {
+  out << "  neuron " << functionText(neuron.function) << " parameter "
+      << formatNumber(neuron.parameter);
+  for (const NeuronInput& input : neuron.inputs)
+    out << " input " << inputText(input);
+  out << "\n";
+}
+
+//---------------------------------------------------------------- parsing
+
+// the statement being parsed: one line split into tokens, with its place for messages
+class Line {
+ public:
+  Line(const std::string& source, int number, std::vector<std::string_view> tokens)
+      : source_(source), number_(number), tokens_(std::move(tokens)) {}
+
+  void context(std::string where) { where_ = std::move(where); }
+  bool more() const { return pos_ < tokens_.size(); }
+  std::string_view peek() const { return tokens_[pos_]; }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    std::string prefix = source_ + ":" + std::to_string(number_) + ": ";
+    if (!where_.empty())
+      prefix += where_ + ": ";
+    throw InputError(prefix + what);
+  }
+
+  // the next token, which `field` needs
+  std::string_view next(const std::string& field, const char* kind) {
+    if (!more())
+      fail("expected " + std::string(kind) + " for '" + field + "', got end of line");
+    return tokens_[pos_++];
+  }
+
+  double number(const std::string& field) {
+    std::string_view token = next(field, "a number");
+    std::string_view digits = token;
+    if (!digits.empty() && digits.front() == '+')
+      digits.remove_prefix(1);
+    double value = 0;
+    auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (digits.empty() || result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
+      fail("expected a number for '" + field + "', got '" + std::string(token) + "'");
+    }
+    return value;
+  }
+
+  Vec3 vec3(const std::string& field) {
+    Vec3 v;
+    for (int k = 0; k < 3; ++k)
+      v[k] = number(field);
+    return v;
+  }
+
+  long long integer(const std::string& field, long long lo, long long hi) {
+    std::string_view token = next(field, "an integer");
+    long long value = 0;
+    auto result = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (result.ec != std::errc() || result.ptr != token.data() + token.size() || value < lo ||
+        value > hi) {
+      fail("expected an integer " + std::to_string(lo) + ".." + std::to_string(hi) + " for '" +
+           field + "', got '" + std::string(token) + "'");
+    }
+    return value;
+  }
+
+  // an enumeration by name (or by its number, 0..255), listing the names on error
+  int enumeration(const std::string& field, const char* const* names, int count) {
+    std::string_view token = next(field, "a name");
+    for (int i = 0; i < count; ++i) {
+      if (token == names[i])
+        return i;
+    }
+    long long value = 0;
+    auto result = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (result.ec == std::errc() && result.ptr == token.data() + token.size() && value >= 0 &&
+        value <= 255) {
+      return static_cast<int>(value);
+    }
+    std::string known;
+    for (int i = 0; i < count; ++i)
+      known += (i ? ", " : "") + std::string(names[i]);
+    fail("unknown value '" + std::string(token) + "' for '" + field + "' (one of: " + known + ")");
+  }
+
+  void expect(std::string_view word, const std::string& field) {
+    std::string_view token = next(field, ("'" + std::string(word) + "'").c_str());
+    if (token != word) {
+      fail("expected '" + std::string(word) + "' in '" + field + "', got '" + std::string(token) +
+           "'");
+    }
+  }
+
+ private:
+  const std::string& source_;
+  int number_;
+  std::vector<std::string_view> tokens_;
+  std::size_t pos_ = 0;
+  std::string where_;
+};
+
+// whitespace-separated tokens of one line, stopping at '#'
+std::vector<std::string_view> tokenize(std::string_view line) {
+  std::vector<std::string_view> tokens;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    char c = line[i];
+    if (c == '#')
+      break;
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f') {
+      ++i;
+      continue;
+    }
+    std::size_t start = i;
+    while (i < line.size() && line[i] != '#' && line[i] != ' ' && line[i] != '\t' &&
+           line[i] != '\r' && line[i] != '\v' && line[i] != '\f') {
+      ++i;
+    }
+    tokens.push_back(line.substr(start, i - start));
+  }
+  return tokens;
+}
+
+NeuronFunction parseFunction(Line& line) {
+  std::vector<const char*> names;
+  for (int i = 0; i < kNeuronFunctionCount; ++i) {
+    names.push_back(neuronFunctionName(static_cast<NeuronFunction>(i)));
+  }
+  if (line.more() && line.peek() == "if_positive") {
+    line.next("function", "a name");
+    return NeuronFunction::if_positive;
+  }
+  return static_cast<NeuronFunction>(
+      line.enumeration("function", names.data(), kNeuronFunctionCount));
+}
+
+NeuronInput parseInput(Line& line) {
+  NeuronInput input;
+  input.source =
+      static_cast<SignalSource>(line.enumeration("input source", kSourceNames, kSignalSourceCount));
+  input.slot = static_cast<std::uint16_t>(line.integer("input slot", 0, 65535));
+  input.index = static_cast<std::uint16_t>(line.integer("input index", 0, 65535));
+  input.weight = line.number("input weight");
+  return input;
+}
+
+// neuron fields: parameter P, input SOURCE SLOT INDEX WEIGHT (repeatable)
+void parseNeuronFields(Line& line, NeuronGene& neuron) {
+  while (line.more()) {
+    std::string_view key = line.next("neuron field", "a field");
+    if (key == "parameter") {
+      neuron.parameter = line.number("parameter");
+    } else if (key == "input") {
+      neuron.inputs.push_back(parseInput(line));
+    } else {
+      line.fail("unknown neuron field '" + std::string(key) + "' (parameter, input)");
+    }
+  }
+}
+
+// node fields: shape, size, density, joint, limit, recursion
+void parseNodeFields(Line& line, PartGene& node) {
+  while (line.more()) {
+    std::string_view key = line.next("node field", "a field");
+    if (key == "shape") {
+      node.shape = static_cast<PartShape>(line.enumeration("shape", kShapeNames, kPartShapeCount));
+    } else if (key == "size") {
+      node.dimensions = line.vec3("size");
+    } else if (key == "density") {
+      node.density = line.number("density");
+    } else if (key == "joint") {
+      node.joint_type =
+          static_cast<JointType>(line.enumeration("joint", kJointNames, kJointTypeCount));
+    } else if (key == "limit") {
+      node.joint_limit = line.vec3("limit");
+    } else if (key == "recursion") {
+      node.recursive_limit = static_cast<std::uint8_t>(line.integer("recursion", 0, 255));
+    } else {
+      line.fail("unknown node field '" + std::string(key) +
+                "' (shape, size, density, joint, limit, recursion)");
+    }
+  }
+}
+
+std::uint8_t parseReflection(Line& line) {
+  std::string_view token = line.next("reflect", "x, y, z, a combination or none");
+  if (token == "none")
+    return 0;
+  std::uint8_t bits = 0;
+  bool letters = !token.empty();
+  for (char c : token) {
+    std::uint8_t bit = c == 'x' ? 1 : c == 'y' ? 2 : c == 'z' ? 4 : 0;
+    if (bit == 0 || (bits & bit) != 0)
+      letters = false;
+    bits = static_cast<std::uint8_t>(bits | bit);
+  }
+  if (letters)
+    return bits;
+  int value = 0;
+  auto result = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (result.ec == std::errc() && result.ptr == token.data() + token.size() && value >= 0 &&
+      value <= 255) {
+    return static_cast<std::uint8_t>(value);
+  }
+  line.fail("expected x, y, z, a combination such as xy, or none for 'reflect', got '" +
+            std::string(token) + "'");
+}
+
+// connection fields: position, orientation, scale, reflect, terminal_only
+void parseConnectionFields(Line& line, ConnectionGene& c) {
+  while (line.more()) {
+    std::string_view key = line.next("connection field", "a field");
+    if (key == "position") {
+      c.position = line.vec3("position");
+    } else if (key == "orientation") {
+      c.orientation = line.vec3("orientation");
+    } else if (key == "scale") {
+      c.scale = line.number("scale");
+    } else if (key == "reflect") {
+      c.reflection = parseReflection(line);
+    } else if (key == "terminal_only") {
+      c.terminal_only = true;
+    } else {
+      line.fail("unknown connection field '" + std::string(key) +
+                "' (position, orientation, scale, reflect, terminal_only)");
+    }
+  }
+}
+
+// controller fields: off, amplitude, frequency, phase, offset
+void parseControllerFields(Line& line, JointControllerGene& controller) {
+  controller.enabled = true;
+  while (line.more()) {
+    std::string_view key = line.next("controller field", "a field");
+    if (key == "off") {
+      controller.enabled = false;
+    } else if (key == "amplitude") {
+      controller.amplitude = line.number("amplitude");
+    } else if (key == "frequency") {
+      controller.frequency = line.number("frequency");
+    } else if (key == "phase") {
+      controller.phase = line.number("phase");
+    } else if (key == "offset") {
+      controller.offset = line.number("offset");
+    } else {
+      line.fail("unknown controller field '" + std::string(key) +
+                "' (off, amplitude, frequency, phase, offset)");
+    }
+  }
+}
+
+}  // namespace
+
+std::string genomeToText(const Genome& genome) {
+  std::ostringstream out;
+  out << kHeader << " " << kGenomeFormatVersion << "\n";
+
+  // nodes with their neurons and effectors
+  for (std::size_t i = 0; i < genome.nodes.size(); ++i) {
+    const PartGene& node = genome.nodes[i];
+    out << "node " << i;
+    if (node.shape != PartShape::box) {
+      out << " shape " << enumText(static_cast<int>(node.shape), kShapeNames, kPartShapeCount);
+    }
+    out << " size " << vec3Text(node.dimensions) << " density " << formatNumber(node.density)
+        << " joint " << enumText(static_cast<int>(node.joint_type), kJointNames, kJointTypeCount)
+        << " limit " << vec3Text(node.joint_limit) << " recursion "
+        << static_cast<int>(node.recursive_limit) << "\n";
+    for (const NeuronGene& neuron : node.neurons)
+      writeNeuron(out, neuron);
+    for (const EffectorGene& effector : node.effectors) {
+      out << "  effector input " << inputText(effector.input) << "\n";
+    }
+  }
+
+  // connections with their controllers
+  for (const ConnectionGene& c : genome.connections) {
+    out << "connection " << c.from << " -> " << c.to << " position " << vec3Text(c.position)
+        << " orientation " << vec3Text(c.orientation) << " scale " << formatNumber(c.scale);
+    if (c.reflection != 0)
+      out << " reflect " << reflectionText(c.reflection);
+    if (c.terminal_only)
+      out << " terminal_only";
+    out << "\n";
+    if (!(c.controller == JointControllerGene{})) {
+      out << "  controller" << (c.controller.enabled ? "" : " off") << " amplitude "
+          << formatNumber(c.controller.amplitude) << " frequency "
+          << formatNumber(c.controller.frequency) << " phase " << formatNumber(c.controller.phase)
+          << " offset " << formatNumber(c.controller.offset) << "\n";
+    }
+  }
+
+  // global brain
+  if (!genome.brain.empty()) {
+    out << "brain\n";
+    for (const NeuronGene& neuron : genome.brain)
+      writeNeuron(out, neuron);
+  }
+  return out.str();
+}
+
+Genome parseGenomeText(const std::string& text, const std::string& source) {
+  Genome genome;
+  enum class Section { none, node, connection, brain };
+  Section section = Section::none;
+  bool have_header = false;
+  NeuronGene* last_neuron = nullptr;  // target of `input` / `parameter` continuation lines
+  std::string where;                  // the current item, for messages
+
+  std::size_t start = 0;
+  int line_number = 0;
+  while (start <= text.size()) {
+    // next line
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos)
+      end = text.size();
+    std::string_view raw(text.data() + start, end - start);
+    start = end + 1;
+    ++line_number;
+    Line line(source, line_number, tokenize(raw));
+    if (!line.more())
+      continue;
+    std::string keyword(line.next("statement", "a keyword"));
+
+    // header first
+    if (!have_header) {
+      if (keyword != kHeader) {
+        line.fail("expected the header 'cambrian-genome " + std::to_string(kGenomeFormatVersion) +
+                  "', got '" + keyword + "'");
+      }
+      long long version = line.integer("cambrian-genome", 0, 1LL << 32);
+      if (version > kGenomeFormatVersion) {
+        line.fail("format version " + std::to_string(version) + " is newer than this cambrian (" +
+                  std::to_string(kGenomeFormatVersion) + ")");
+      }
+      if (version < 1)
+        line.fail("format version " + std::to_string(version) + " does not exist");
+      if (line.more())
+        line.fail("unexpected '" + std::string(line.peek()) + "' after the header");
+      have_header = true;
+      continue;
+    }
+
+    if (keyword == "node") {
+      // a new node, numbered in order
+      line.context("node");
+      long long index = line.integer("node", 0, 65535);
+      if (static_cast<std::size_t>(index) != genome.nodes.size()) {
+        line.fail("expected node " + std::to_string(genome.nodes.size()) + " next, got node " +
+                  std::to_string(index));
+      }
+      where = "node " + std::to_string(index);
+      line.context(where);
+      genome.nodes.emplace_back();
+      parseNodeFields(line, genome.nodes.back());
+      section = Section::node;
+      last_neuron = nullptr;
+    } else if (keyword == "connection") {
+      // a new connection: from -> to, then fields
+      where = "connection " + std::to_string(genome.connections.size());
+      line.context(where);
+      ConnectionGene c;
+      c.from = static_cast<std::uint16_t>(line.integer("from", 0, 65535));
+      line.expect("->", "connection");
+      c.to = static_cast<std::uint16_t>(line.integer("to", 0, 65535));
+      genome.connections.push_back(c);
+      parseConnectionFields(line, genome.connections.back());
+      section = Section::connection;
+      last_neuron = nullptr;
+    } else if (keyword == "brain") {
+      // the global neurons follow
+      where = "brain";
+      line.context(where);
+      if (line.more())
+        line.fail("unexpected '" + std::string(line.peek()) + "' after 'brain'");
+      section = Section::brain;
+      last_neuron = nullptr;
+    } else if (keyword == "neuron") {
+      // a neuron of the current node or of the brain
+      std::vector<NeuronGene>* list = nullptr;
+      if (section == Section::node)
+        list = &genome.nodes.back().neurons;
+      if (section == Section::brain)
+        list = &genome.brain;
+      line.context(where.empty() ? std::string("neuron") : where);
+      if (list == nullptr)
+        line.fail("a neuron line must follow a node or the brain line");
+      line.context(where + ": neuron " + std::to_string(list->size()));
+      list->emplace_back();
+      list->back().function = parseFunction(line);
+      parseNeuronFields(line, list->back());
+      last_neuron = &list->back();
+    } else if (keyword == "input" || keyword == "parameter") {
+      // more fields of the last neuron
+      line.context(where.empty() ? keyword : where);
+      if (last_neuron == nullptr)
+        line.fail("'" + keyword + "' must follow a neuron line");
+      Line rest(source, line_number, tokenize(raw));
+      rest.context(where + ": neuron");
+      parseNeuronFields(rest, *last_neuron);
+    } else if (keyword == "effector") {
+      // an effector of the current node: [input] SOURCE SLOT INDEX WEIGHT
+      line.context(where.empty() ? std::string("effector") : where);
+      if (section != Section::node)
+        line.fail("an effector line must follow a node line");
+      line.context(where + ": effector " + std::to_string(genome.nodes.back().effectors.size()));
+      EffectorGene effector;
+      if (line.more() && line.peek() == "input")
+        line.next("effector", "'input'");
+      if (line.more())
+        effector.input = parseInput(line);
+      if (line.more())
+        line.fail("unexpected '" + std::string(line.peek()) + "' after the input");
+      genome.nodes.back().effectors.push_back(effector);
+      last_neuron = nullptr;
+    } else if (keyword == "controller") {
+      // the joint controller of the current connection
+      line.context(where.empty() ? std::string("controller") : where);
+      if (section != Section::connection)
+        line.fail("a controller line must follow a connection");
+      line.context(where + ": controller");
+      parseControllerFields(line, genome.connections.back().controller);
+      last_neuron = nullptr;
+    } else if (keyword == "cambrian-genome") {
+      line.fail("the header may appear only once");
+    } else {
+      // more fields of the current node or connection
+      line.context(where.empty() ? std::string("genome") : where);
+      Line rest(source, line_number, tokenize(raw));
+      rest.context(where);
+      if (section == Section::node) {
+        parseNodeFields(rest, genome.nodes.back());
+      } else if (section == Section::connection) {
+        parseConnectionFields(rest, genome.connections.back());
+      } else {
+        line.fail("unknown statement '" + keyword +
+                  "' (node, connection, brain, neuron, effector, controller)");
+      }
+      last_neuron = nullptr;
+    }
+  }
+  if (!have_header) {
+    throw InputError(source + ": empty genome text (expected the header 'cambrian-genome " +
+                     std::to_string(kGenomeFormatVersion) + "')");
+  }
+  return genome;
+}
+
+}  // namespace cambrian
