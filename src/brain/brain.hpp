@@ -1,11 +1,11 @@
 // cambrian: the creature's controller compiled from a BodyPlan into flat arrays.
 #pragma once
 
+#include "cambrian/body_plan.hpp"
+
 #include <cstdint>
 #include <span>
 #include <vector>
-
-#include "cambrian/body_plan.hpp"
 
 namespace cambrian {
 
@@ -26,6 +26,9 @@ class Brain {
   void reset();
   /// All signals (sensors then neurons), for tests and tracing.
   std::span<const double> signals() const;
+  /// Controller clock t in seconds: the number of completed step() calls times the time step.
+  /// step() evaluates oscillators at the clock value it starts with.
+  double time() const { return time_; }
 
  private:
   // compiled from the plan: see brain.cpp
@@ -39,6 +42,7 @@ class Brain {
   std::vector<JointControllerGene> effector_oscillator_;
   int sensor_count_ = 0, neuron_count_ = 0;
   double time_step_ = 0, time_ = 0;
+  std::uint64_t steps_ = 0;  // step() calls since construction or reset(); time_ = steps_ * dt
 };
 
 }  // namespace cambrian
