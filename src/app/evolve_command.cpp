@@ -1,14 +1,286 @@
-// placeholder until the evolution engineer's implementation lands (issue 3)
-#include <iostream>
-
+// cambrian evolve: rank 0 breeds and schedules, ranks 1..N-1 evaluate; one rank evaluates in
+// process. Every rank parses the same options; a bad setting ends every rank with
+// ExitCode::config before any simulation starts.
 #include "cambrian/error.hpp"
+#include "cambrian/genome.hpp"
+
 #include "commands.hpp"
+#include "evolution/evolution_settings.hpp"
+#include "options.hpp"
+#include "parallel/evolution_run.hpp"
+#include "parallel/mpi_context.hpp"
+#include "parallel/scheduler.hpp"
+#include "parallel/worker.hpp"
+
+#include <iostream>
+#include <sstream>
 
 namespace cambrian {
 
-int runEvolve(int, char**) {
-  std::cerr << "cambrian evolve: not built yet\n";
-  return static_cast<int>(ExitCode::failure);
+namespace {
+
+// everything evolve reads from the command line and the experiment file
+struct EvolveSettings {
+  CreatureSettings creature;
+  EvolutionSettings evolution;
+  RunSettings run;
+  std::string selection_name = "truncation";
+  std::vector<std::string> seed_genomes;
+  std::uint64_t fail_every = 0;
+};
+
+// the [evolution] and [run] keys
+po::options_description evolutionOptions(EvolveSettings& s) {
+  EvolutionSettings& e = s.evolution;
+  MutationSettings& m = e.mutation;
+  po::options_description evolution("[evolution] genetic algorithm");
+  evolution.add_options()("evolution.population",
+                          po::value(&e.population)->default_value(e.population),
+                          "individuals per generation")(
+      "evolution.generations", po::value(&e.generations)->default_value(e.generations),
+      "generations to run, the first included")(
+      "evolution.elite_fraction", po::value(&e.elite_fraction)->default_value(e.elite_fraction),
+      "share of the best kept unchanged and not re-evaluated (0..1)")(
+      "evolution.mutation_fraction",
+      po::value(&e.mutation_fraction)->default_value(e.mutation_fraction),
+      "share of offspring made by mutation (the three fractions sum to 1)")(
+      "evolution.crossover_fraction",
+      po::value(&e.crossover_fraction)->default_value(e.crossover_fraction),
+      "share of offspring made by crossover")(
+      "evolution.graft_fraction", po::value(&e.graft_fraction)->default_value(e.graft_fraction),
+      "share of offspring made by grafting")(
+      "evolution.mutation_rate", po::value(&m.parameter_rate)->default_value(m.parameter_rate),
+      "chance each parameter of an asexual offspring is perturbed (0..1)")(
+      "evolution.mutation_perturbation", po::value(&m.perturbation)->default_value(m.perturbation),
+      "perturbation scale, fraction of each parameter's range")(
+      "evolution.add_node_rate", po::value(&m.add_node_rate)->default_value(m.add_node_rate),
+      "chance a mutation adds a node")(
+      "evolution.remove_node_rate",
+      po::value(&m.remove_node_rate)->default_value(m.remove_node_rate),
+      "chance a mutation removes a node")(
+      "evolution.add_connection_rate",
+      po::value(&m.add_connection_rate)->default_value(m.add_connection_rate),
+      "chance a mutation adds a connection")(
+      "evolution.remove_connection_rate",
+      po::value(&m.remove_connection_rate)->default_value(m.remove_connection_rate),
+      "chance a mutation removes a connection")(
+      "evolution.repoint_rate", po::value(&m.repoint_rate)->default_value(m.repoint_rate),
+      "chance each connection is re-pointed")(
+      "evolution.add_neuron_rate", po::value(&m.add_neuron_rate)->default_value(m.add_neuron_rate),
+      "chance a mutation adds a neuron")(
+      "evolution.remove_neuron_rate",
+      po::value(&m.remove_neuron_rate)->default_value(m.remove_neuron_rate),
+      "chance a mutation removes a neuron")(
+      "evolution.keep_unconnected",
+      po::value(&m.keep_unconnected)->default_value(m.keep_unconnected),
+      "keep nodes unreachable from the root (Chaumont) instead of collecting them")(
+      "evolution.post_crossover_mutation_chance",
+      po::value(&e.post_crossover_mutation_chance)->default_value(e.post_crossover_mutation_chance),
+      "chance an offspring of crossover or grafting is then mutated")(
+      "evolution.post_crossover_mutation_rate",
+      po::value(&e.post_crossover_mutation_rate)->default_value(e.post_crossover_mutation_rate),
+      "per-parameter rate of that mutation")(
+      "evolution.selection", po::value(&s.selection_name)->default_value(s.selection_name),
+      "parent selection: truncation | tournament | roulette | sus | rank")(
+      "evolution.truncation_fraction",
+      po::value(&e.selection.truncation_fraction)->default_value(e.selection.truncation_fraction),
+      "truncation: share of the best that may be parents")(
+      "evolution.tournament_size",
+      po::value(&e.selection.tournament_size)->default_value(e.selection.tournament_size),
+      "tournament: contestants per pick")(
+      "evolution.rank_pressure",
+      po::value(&e.selection.rank_pressure)->default_value(e.selection.rank_pressure),
+      "rank: expected picks of the best (1..2)")(
+      "evolution.seed_genomes", po::value(&s.seed_genomes)->composing(),
+      "genome files the first generation starts from (repeat the key or separate by spaces)");
+
+  po::options_description run("[run] this run");
+  run.add_options()("run.seed", po::value(&e.seed)->default_value(e.seed),
+                    "run seed (same seed, same run)")(
+      "run.out", po::value(&s.run.out_dir)->default_value(s.run.out_dir),
+      "output directory (individuals.tsv, generations.tsv)")(
+      "run.quiet", po::value(&s.run.quiet)->default_value(s.run.quiet),
+      "no progress lines, only the digest")("run.verbose",
+                                            po::value(&s.run.verbose)->default_value(s.run.verbose),
+                                            "timing details after each progress line")(
+      "run.fail_every", po::value(&s.fail_every)->default_value(s.fail_every),
+      "testing: workers fail every creature whose id is a multiple of this (0 = never)");
+
+  po::options_description all("Evolution settings (INI sections [evolution], [run])");
+  all.add(evolution).add(run);
+  return all;
+}
+
+// splits "a.txt b.txt,c.txt" lists into single paths
+std::vector<std::string> splitList(const std::vector<std::string>& values) {
+  std::vector<std::string> items;
+  for (std::string value : values) {
+    for (char& c : value) {
+      if (c == ',')
+        c = ' ';
+    }
+    std::istringstream words(value);
+    std::string word;
+    while (words >> word)
+      items.push_back(word);
+  }
+  return items;
+}
+
+// what parsing produced: settings, or an exit code and message
+struct Setup {
+  EvolveSettings settings;
+  std::vector<Genome> seeds;
+  bool help = false;
+  std::string help_text;
+};
+
+// parses and checks everything; throws Error with the config code and the file named
+Setup parse(int argc, char** argv, bool read_seeds) {
+  Setup setup;
+  EvolveSettings& s = setup.settings;
+  po::options_description settings;
+  settings.add(creatureOptions(s.creature)).add(evolutionOptions(s));
+  std::string config_path;
+  std::uint64_t seed = 0;
+  std::string out;
+  bool quiet = false, verbose = false;
+  po::options_description cli("Command line");
+  cli.add_options()("help,h", "print this help")("config,c", po::value(&config_path),
+                                                 "experiment file (INI)")("seed", po::value(&seed),
+                                                                          "short for --run.seed")(
+      "out,o", po::value(&out), "short for --run.out")("quiet,q", po::bool_switch(&quiet),
+                                                       "short for --run.quiet true")(
+      "verbose,v", po::bool_switch(&verbose), "short for --run.verbose true");
+
+  po::variables_map vm;
+  try {
+    vm = parseOptions(argc, argv, cli, settings, nullptr, "config");
+  } catch (const ConfigError& e) {
+    throw;
+  }
+  if (vm.count("help")) {
+    std::ostringstream text;
+    text << "usage: mpirun -np N cambrian evolve --config FILE [--seed S] [--out DIR] [options]\n"
+         << "Rank 0 breeds, ranks 1..N-1 evaluate; with one rank it evaluates in process.\n"
+         << "Every key works in the INI file ([section] key = value) and as --section.key.\n\n"
+         << cli << "\n"
+         << settings;
+    setup.help = true;
+    setup.help_text = text.str();
+    return setup;
+  }
+
+  // short forms win over the long keys
+  if (vm.count("seed"))
+    s.evolution.seed = seed;
+  if (vm.count("out"))
+    s.run.out_dir = out;
+  if (quiet)
+    s.run.quiet = true;
+  if (verbose)
+    s.run.verbose = true;
+
+  // words to enums and range checks, naming the file
+  std::string where = config_path.empty() ? "" : config_path + ": ";
+  try {
+    finishCreatureSettings(s.creature);
+    s.evolution.selection.method = selectionMethodFromName(s.selection_name);
+    s.evolution.seed_genomes = splitList(s.seed_genomes);
+    validateEvolutionSettings(s.evolution);
+  } catch (const ConfigError& e) {
+    throw ConfigError(where + e.what());
+  }
+
+  // seed genomes (rank 0 only), checked against the limits
+  if (read_seeds) {
+    for (const std::string& path : s.evolution.seed_genomes) {
+      Genome genome = readGenomeFile(path);
+      try {
+        validateGenome(genome, s.creature.limits);
+      } catch (const Error& e) {
+        throw InputError(path + ": " + e.what());
+      }
+      setup.seeds.push_back(std::move(genome));
+    }
+  }
+  return setup;
+}
+
+}  // namespace
+
+int runEvolve(int argc, char** argv) {
+  MpiContext mpi(&argc, &argv);
+  bool root = mpi.rank() == 0;
+
+  // every rank parses; the worst code decides for all of them, before any evaluation
+  Setup setup;
+  int code = 0;
+  try {
+    setup = parse(argc, argv, root);
+  } catch (const Error& e) {
+    code = static_cast<int>(e.code());
+    if (root) {
+      std::cerr << "cambrian evolve: error: " << e.what() << std::endl;
+    } else if (e.code() != ExitCode::config && e.code() != ExitCode::usage) {
+      std::cerr << "cambrian evolve: rank " << mpi.rank() << ": error: " << e.what() << std::endl;
+    }
+  }
+  code = mpi.allReduceMax(code);
+  if (code != 0)
+    return code;
+  if (setup.help) {
+    if (root)
+      std::cout << setup.help_text;
+    return 0;
+  }
+
+  // the creature settings every evaluation uses
+  const EvolveSettings& s = setup.settings;
+  WorkerSettings worker;
+  worker.limits = s.creature.limits;
+  worker.task = s.creature.task;
+  worker.physics = s.creature.physics;
+  worker.fail_every = s.fail_every;
+
+  try {
+    if (!root) {
+      runWorker(mpi, worker);
+      return 0;
+    }
+    // rank 0: schedule over the workers, or evaluate in process with one rank
+    std::unique_ptr<PopulationEvaluator> evaluator;
+    MpiScheduler* scheduler = nullptr;
+    if (mpi.size() > 1) {
+      auto owned = std::make_unique<MpiScheduler>(mpi);
+      scheduler = owned.get();
+      evaluator = std::move(owned);
+    } else {
+      evaluator = std::make_unique<InProcessEvaluator>(worker);
+    }
+    if (!s.run.quiet) {
+      std::cout << "cambrian evolve: " << mpi.size() << " rank(s), " << evaluator->workers()
+                << " evaluating; task " << s.creature.task_name << ", population "
+                << s.evolution.population << ", generations " << s.evolution.generations
+                << ", seed " << s.evolution.seed << std::endl;
+    }
+    RunResult result =
+        runEvolution(s.evolution, s.creature.limits, setup.seeds, *evaluator, s.run, std::cout);
+    if (scheduler)
+      scheduler->stopWorkers();
+
+    // the run digest and rank 0's cost
+    std::cout << "digest " << result.digest << "\n"
+              << "rank0_cpu_seconds " << result.rank0_cpu_seconds << "\n"
+              << "wall_seconds " << result.wall_seconds << "\n"
+              << "tables " << s.run.out_dir << "/individuals.tsv " << s.run.out_dir
+              << "/generations.tsv" << std::endl;
+    return 0;
+  } catch (const Error& e) {
+    mpi.abort(root ? e.code() : ExitCode::worker_failure, e.what());
+  } catch (const std::exception& e) {
+    mpi.abort(root ? ExitCode::failure : ExitCode::worker_failure, e.what());
+  }
 }
 
 }  // namespace cambrian

@@ -1,0 +1,147 @@
+#include "evolution/breeder.hpp"
+
+#include "cambrian/operators.hpp"
+
+#include "evolution/selection.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace cambrian {
+
+BreedingPlan planBreeding(const EvolutionSettings& s) {
+  // elites first, then the offspring shares of the rest
+  BreedingPlan plan;
+  plan.elites = static_cast<int>(std::lround(s.population * s.elite_fraction));
+  plan.elites = std::min(plan.elites, s.population - 1);
+  int rest = s.population - plan.elites;
+  plan.mutations = std::min(rest, static_cast<int>(std::lround(rest * s.mutation_fraction)));
+  plan.crossovers =
+      std::min(rest - plan.mutations, static_cast<int>(std::lround(rest * s.crossover_fraction)));
+  plan.grafts = rest - plan.mutations - plan.crossovers;
+  return plan;
+}
+
+Breeder::Breeder(const EvolutionSettings& settings, const GenomeLimits& limits)
+    : settings_(settings), limits_(limits), plan_(planBreeding(settings)) {}
+
+Genome Breeder::tidy(Genome genome) const {
+  // Chaumont keeps unreachable nodes; otherwise they are collected
+  if (settings_.mutation.keep_unconnected)
+    return genome;
+  return removeUnreachableNodes(genome);
+}
+
+Population Breeder::initialPopulation(const std::vector<Genome>& seeds) {
+  Population population;
+  population.generation = 0;
+  population.individuals.reserve(static_cast<std::size_t>(settings_.population));
+  std::uint64_t first_id = next_id_;
+
+  for (int i = 0; i < settings_.population; ++i) {
+    Individual individual;
+    individual.id = next_id_++;
+    individual.generation = 0;
+    auto slot = static_cast<std::size_t>(i);
+    if (seeds.empty()) {
+      // a random creature from the stream (seed, random_genome, 0, i)
+      individual.origin = Origin::random;
+      individual.genome = randomGenome(limits_, settings_.seed, 0, slot);
+    } else if (slot < seeds.size()) {
+      // the seed itself
+      individual.origin = Origin::seed;
+      individual.genome = seeds[slot];
+    } else {
+      // a mutated copy of a seed, round robin
+      std::size_t source = slot % seeds.size();
+      Rng rng(settings_.seed, RngPurpose::initial_population, 0, slot);
+      individual.origin = Origin::mutation;
+      individual.parents = {first_id + source};
+      individual.genome = tidy(mutate(seeds[source], limits_, settings_.mutation, rng));
+    }
+    population.individuals.push_back(std::move(individual));
+  }
+  return population;
+}
+
+Population Breeder::nextGeneration(const Population& evaluated) {
+  if (!evaluated.allEvaluated()) {
+    throw std::invalid_argument("nextGeneration: generation " +
+                                std::to_string(evaluated.generation) + " is not fully evaluated");
+  }
+  std::uint64_t g = evaluated.generation + 1;
+  std::vector<std::size_t> ranking = evaluated.ranking();
+  std::vector<double> ranked_fitness;
+  ranked_fitness.reserve(ranking.size());
+  for (std::size_t index : ranking)
+    ranked_fitness.push_back(evaluated.individuals[index].fitness());
+
+  Population next;
+  next.generation = g;
+  next.individuals.reserve(static_cast<std::size_t>(plan_.total()));
+
+  // elites: copies of the best with their outcomes (their genome did not change)
+  for (int e = 0; e < plan_.elites && e < static_cast<int>(ranking.size()); ++e) {
+    const Individual& parent = evaluated.individuals[ranking[static_cast<std::size_t>(e)]];
+    Individual copy;
+    copy.id = next_id_++;
+    copy.generation = g;
+    copy.parents = {parent.id};
+    copy.origin = Origin::elite;
+    copy.genome = parent.genome;
+    copy.outcome = parent.outcome;
+    copy.evaluated = true;
+    next.individuals.push_back(std::move(copy));
+  }
+
+  // every parent pick of the generation in one stream: (seed, selection, g, 0)
+  auto picks_needed =
+      static_cast<std::size_t>(plan_.mutations + 2 * plan_.crossovers + 2 * plan_.grafts);
+  Rng selection_rng(settings_.seed, RngPurpose::selection, g, 0);
+  std::vector<std::size_t> picks =
+      selectParents(ranked_fitness, picks_needed, settings_.selection, selection_rng);
+  std::size_t next_pick = 0;
+  auto pickParent = [&]() -> const Individual& {
+    return evaluated.individuals[ranking[picks[next_pick++]]];
+  };
+
+  // the weaker mutation that may follow crossover and grafting (Chaumont §5.7)
+  MutationSettings post = settings_.mutation;
+  post.parameter_rate = settings_.post_crossover_mutation_rate;
+
+  // offspring slot i uses the stream (seed, variation, g, i)
+  int offspring = plan_.mutations + plan_.crossovers + plan_.grafts;
+  for (int i = 0; i < offspring; ++i) {
+    Rng rng(settings_.seed, RngPurpose::variation, g, static_cast<std::uint64_t>(i));
+    Individual child;
+    child.generation = g;
+    if (i < plan_.mutations) {
+      // asexual: copy and mutate each parameter with mutation_rate
+      const Individual& parent = pickParent();
+      child.origin = Origin::mutation;
+      child.parents = {parent.id};
+      child.genome = mutate(parent.genome, limits_, settings_.mutation, rng);
+    } else {
+      // sexual: crossover or graft, then maybe a light mutation
+      const Individual& a = pickParent();
+      const Individual& b = pickParent();
+      child.parents = {a.id, b.id};
+      if (i < plan_.mutations + plan_.crossovers) {
+        child.origin = Origin::crossover;
+        child.genome = crossover(a.genome, b.genome, limits_, rng);
+      } else {
+        child.origin = Origin::graft;
+        child.genome = graft(a.genome, b.genome, limits_, rng);
+      }
+      if (rng.bernoulli(settings_.post_crossover_mutation_chance)) {
+        child.genome = mutate(child.genome, limits_, post, rng);
+      }
+    }
+    child.genome = tidy(std::move(child.genome));
+    child.id = next_id_++;
+    next.individuals.push_back(std::move(child));
+  }
+  return next;
+}
+
+}  // namespace cambrian

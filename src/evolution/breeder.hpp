@@ -1,0 +1,59 @@
+// cambrian: the generational Sims / Chaumont scheme — elitism plus mutation, crossover, grafting.
+#pragma once
+
+#include "cambrian/genome.hpp"
+
+#include "evolution/evolution_settings.hpp"
+#include "evolution/population.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace cambrian {
+
+/// How many individuals of a generation each operator makes. Sums to the population size.
+struct BreedingPlan {
+  int elites = 0;
+  int mutations = 0;
+  int crossovers = 0;
+  int grafts = 0;
+  /// elites + mutations + crossovers + grafts.
+  int total() const { return elites + mutations + crossovers + grafts; }
+};
+
+/// The plan for `settings`: elites = round(P * elite_fraction), the rest split by the offspring
+/// fractions (rounded; grafts take the remainder).
+BreedingPlan planBreeding(const EvolutionSettings& settings);
+
+/// Makes generations. Every random decision is keyed by (run seed, purpose) and counted by
+/// (generation, offspring slot), so a generation is a pure function of the previous one's genomes
+/// and fitnesses — never of rank count or arrival order. Ids are handed out in slot order.
+class Breeder {
+ public:
+  /// `settings` must have passed validateEvolutionSettings().
+  Breeder(const EvolutionSettings& settings, const GenomeLimits& limits);
+
+  /// Generation 0: random genomes, or the seeds followed by mutated copies of them (round robin).
+  Population initialPopulation(const std::vector<Genome>& seeds = {});
+
+  /// The next generation from an evaluated one: the best `elites` copied with their outcomes
+  /// (not re-evaluated), then mutation, crossover and graft offspring of selected parents.
+  /// Throws std::invalid_argument when `evaluated` is not fully evaluated.
+  Population nextGeneration(const Population& evaluated);
+
+  /// The id the next new individual gets.
+  std::uint64_t nextId() const { return next_id_; }
+  /// Sets the id counter (resuming a run).
+  void setNextId(std::uint64_t id) { next_id_ = id; }
+  /// The plan every generation after the first follows.
+  const BreedingPlan& plan() const { return plan_; }
+
+ private:
+  Genome tidy(Genome genome) const;
+  EvolutionSettings settings_;
+  GenomeLimits limits_;
+  BreedingPlan plan_;
+  std::uint64_t next_id_ = 0;
+};
+
+}  // namespace cambrian

@@ -1,0 +1,62 @@
+#include "evolution/population.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace cambrian {
+
+const char* originName(Origin origin) {
+  switch (origin) {
+    case Origin::random:
+      return "random";
+    case Origin::seed:
+      return "seed";
+    case Origin::elite:
+      return "elite";
+    case Origin::mutation:
+      return "mutation";
+    case Origin::crossover:
+      return "crossover";
+    case Origin::graft:
+      return "graft";
+  }
+  return "unknown";
+}
+
+double Individual::fitness() const {
+  if (!evaluated || !std::isfinite(outcome.fitness))
+    return kWorstFitness;
+  return outcome.fitness;
+}
+
+std::vector<std::size_t> Population::ranking() const {
+  // fitness descending, then id ascending: a total order independent of arrival order
+  std::vector<std::size_t> order(individuals.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [this](std::size_t a, std::size_t b) {
+    double fa = individuals[a].fitness(), fb = individuals[b].fitness();
+    if (fa != fb)
+      return fa > fb;
+    return individuals[a].id < individuals[b].id;
+  });
+  return order;
+}
+
+std::size_t Population::indexOf(std::uint64_t id) const {
+  // ids increase along the vector: binary search
+  auto it = std::lower_bound(individuals.begin(), individuals.end(), id,
+                             [](const Individual& i, std::uint64_t key) { return i.id < key; });
+  if (it == individuals.end() || it->id != id) {
+    throw std::out_of_range("population: no individual with id " + std::to_string(id));
+  }
+  return static_cast<std::size_t>(it - individuals.begin());
+}
+
+bool Population::allEvaluated() const {
+  return std::all_of(individuals.begin(), individuals.end(),
+                     [](const Individual& i) { return i.evaluated; });
+}
+
+}  // namespace cambrian

@@ -1,0 +1,52 @@
+// cambrian: individuals and the population rank 0 holds.
+#pragma once
+
+#include "cambrian/genome.hpp"
+#include "cambrian/outcome.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cambrian {
+
+/// What made an individual.
+enum class Origin : std::uint8_t { random, seed, elite, mutation, crossover, graft };
+
+/// Lower-case origin name ("crossover").
+const char* originName(Origin origin);
+
+/// An id no individual has (the value of Individual::id before one is given).
+constexpr std::uint64_t kNoId = UINT64_MAX;
+
+/// One creature of one generation.
+struct Individual {
+  std::uint64_t id = kNoId;            ///< unique across the run, increasing with creation
+  std::uint64_t generation = 0;        ///< generation it belongs to
+  std::vector<std::uint64_t> parents;  ///< 0 (random, seed), 1 (elite, mutation) or 2 ids
+  Origin origin = Origin::random;
+  Genome genome;
+  Outcome outcome;          ///< filled by evaluation (or copied, for elites)
+  bool evaluated = false;   ///< true once outcome holds a result for this genome
+  double eval_seconds = 0;  ///< wall time of its evaluation; 0 when copied
+  int worker_rank = -1;     ///< rank that evaluated it; -1 when copied or not yet evaluated
+
+  /// The fitness used for selection: the outcome's, or kWorstFitness before evaluation and for
+  /// a non-finite value (so ranking is a total order).
+  double fitness() const;
+};
+
+/// A generation of individuals in creation order (ids increasing).
+struct Population {
+  std::uint64_t generation = 0;
+  std::vector<Individual> individuals;
+
+  /// Indices of the individuals, best first: fitness descending, ties broken by id ascending.
+  std::vector<std::size_t> ranking() const;
+  /// Index of the individual with this id; throws std::out_of_range when absent.
+  std::size_t indexOf(std::uint64_t id) const;
+  /// True when every individual holds an outcome.
+  bool allEvaluated() const;
+};
+
+}  // namespace cambrian

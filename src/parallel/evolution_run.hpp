@@ -1,0 +1,44 @@
+// cambrian: rank 0's side of a whole run — generations of evaluation and breeding, progress
+// lines, records, the run digest and the output files.
+#pragma once
+
+#include "cambrian/genome.hpp"
+
+#include "evolution/evolution_settings.hpp"
+#include "evolution/run_record.hpp"
+#include "parallel/scheduler.hpp"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace cambrian {
+
+/// Where a run writes and how much it says.
+struct RunSettings {
+  std::string out_dir = "cambrian-run";  ///< individuals.tsv and generations.tsv go here
+  bool quiet = false;                    ///< no progress lines, only the digest
+  bool verbose = false;                  ///< timing details after each progress line
+};
+
+/// What a run produced.
+struct RunResult {
+  std::string digest;  ///< RunDigest::hex() over every individual
+  std::vector<IndividualRecord> individuals;
+  std::vector<GenerationRecord> generations;
+  double rank0_cpu_seconds = 0;  ///< CPU time rank 0 used during the run (getrusage)
+  double wall_seconds = 0;
+};
+
+/// One progress line (no newline): generation, best / mean / median fitness, evaluations per
+/// second, worker utilisation and the estimated time left.
+std::string progressLine(const GenerationRecord& record, int generations, double eta_seconds);
+
+/// Runs `settings.generations` generations from `seeds` (random genomes when empty) on
+/// `evaluator`, prints progress to `out`, writes DIR/individuals.tsv and DIR/generations.tsv
+/// (Error(output_file) naming the path when it cannot) and returns the records.
+RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& limits,
+                       const std::vector<Genome>& seeds, PopulationEvaluator& evaluator,
+                       const RunSettings& run, std::ostream& out);
+
+}  // namespace cambrian

@@ -1,0 +1,139 @@
+#include "parallel/mpi_context.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <ctime>
+#include <iostream>
+#include <sys/resource.h>
+
+namespace cambrian {
+
+namespace {
+
+// throws Error(mpi) when an MPI call did not succeed
+void check(int code, const char* call, int rank) {
+  if (code == MPI_SUCCESS)
+    return;
+  char text[MPI_MAX_ERROR_STRING];
+  int length = 0;
+  MPI_Error_string(code, text, &length);
+  throw Error(ExitCode::mpi, std::string("rank ") + std::to_string(rank) + ": " + call +
+                                 " failed: " + std::string(text, static_cast<std::size_t>(length)));
+}
+
+}  // namespace
+
+MpiContext::MpiContext(int* argc, char*** argv) {
+  // initialise unless someone already did
+  int initialised = 0;
+  MPI_Initialized(&initialised);
+  if (!initialised) {
+    if (MPI_Init(argc, argv) != MPI_SUCCESS)
+      throw Error(ExitCode::mpi, "MPI_Init failed");
+    owns_ = true;
+  }
+  // errors come back as codes, so they become exceptions and then MPI_Abort, never a hang
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiContext::~MpiContext() {
+  int finalised = 0;
+  MPI_Finalized(&finalised);
+  if (owns_ && !finalised)
+    MPI_Finalize();
+}
+
+void MpiContext::send(int destination, Tag tag, const std::vector<std::uint8_t>& bytes) {
+  check(MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, destination,
+                 static_cast<int>(tag), MPI_COMM_WORLD),
+        "MPI_Send", rank_);
+}
+
+bool MpiContext::tryReceiveAny(int source, Message& out) {
+  // probe without blocking, then receive exactly what is there
+  int flag = 0;
+  MPI_Status status;
+  check(
+      MPI_Iprobe(source < 0 ? MPI_ANY_SOURCE : source, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status),
+      "MPI_Iprobe", rank_);
+  if (!flag)
+    return false;
+  int count = 0;
+  MPI_Get_count(&status, MPI_BYTE, &count);
+  out.bytes.resize(static_cast<std::size_t>(count));
+  check(MPI_Recv(out.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG,
+                 MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+        "MPI_Recv", rank_);
+  out.source = status.MPI_SOURCE;
+  out.tag = static_cast<Tag>(status.MPI_TAG);
+  return true;
+}
+
+bool MpiContext::tryReceive(Tag tag, Message& out) {
+  // probe for the tag without blocking, then receive it
+  int flag = 0;
+  MPI_Status status;
+  check(MPI_Iprobe(MPI_ANY_SOURCE, static_cast<int>(tag), MPI_COMM_WORLD, &flag, &status),
+        "MPI_Iprobe", rank_);
+  if (!flag)
+    return false;
+  int count = 0;
+  MPI_Get_count(&status, MPI_BYTE, &count);
+  out.bytes.resize(static_cast<std::size_t>(count));
+  check(MPI_Recv(out.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG,
+                 MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+        "MPI_Recv", rank_);
+  out.source = status.MPI_SOURCE;
+  out.tag = tag;
+  return true;
+}
+
+Message MpiContext::receiveAny(int source) {
+  // probe and sleep: Open MPI's blocking receive would spin a core
+  Message message;
+  Backoff backoff;
+  while (!tryReceiveAny(source, message))
+    backoff.wait();
+  return message;
+}
+
+Message MpiContext::receive(Tag tag) {
+  Message message;
+  Backoff backoff;
+  while (!tryReceive(tag, message))
+    backoff.wait();
+  return message;
+}
+
+int MpiContext::allReduceMax(int value) {
+  int result = value;
+  check(MPI_Allreduce(&value, &result, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce",
+        rank_);
+  return result;
+}
+
+void MpiContext::abort(ExitCode code, const std::string& message) const {
+  std::cerr << "cambrian evolve: rank " << rank_ << ": " << message << std::endl;
+  MPI_Abort(MPI_COMM_WORLD, static_cast<int>(code));
+  std::_Exit(static_cast<int>(code));
+}
+
+void Backoff::wait() {
+  // nanosleep, then grow the interval
+  timespec interval{0, micros_ * 1000};
+  nanosleep(&interval, nullptr);
+  micros_ = std::min(kMax, micros_ * 2);
+}
+
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * t.tv_usec; };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+}  // namespace cambrian

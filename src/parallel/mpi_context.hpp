@@ -1,0 +1,84 @@
+// cambrian: the small MPI facade. The only header whose implementation includes <mpi.h>;
+// everything else in the project speaks to MPI through it.
+#pragma once
+
+#include "cambrian/error.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cambrian {
+
+/// Message tags of the evolve protocol.
+enum class Tag : int {
+  request = 1,  ///< rank 0 -> worker: an EvalRequest
+  result = 2,   ///< worker -> rank 0: an EvalResult
+  stop = 3,     ///< rank 0 -> worker: no more work, leave the loop
+};
+
+/// A received message.
+struct Message {
+  int source = -1;
+  Tag tag = Tag::request;
+  std::vector<std::uint8_t> bytes;
+};
+
+/// Initialises MPI for the life of the object (MPI_Init / MPI_Finalize) and wraps the few calls
+/// evolve needs. Waiting never busy-polls: it probes without blocking and sleeps adaptively
+/// (50 us growing to 1 ms), so rank 0 can share a core with a worker.
+class MpiContext {
+ public:
+  /// Calls MPI_Init unless MPI is already initialised.
+  MpiContext(int* argc, char*** argv);
+  /// Calls MPI_Finalize when this object initialised MPI.
+  ~MpiContext();
+  MpiContext(const MpiContext&) = delete;
+  MpiContext& operator=(const MpiContext&) = delete;
+
+  /// This process' rank in MPI_COMM_WORLD.
+  int rank() const { return rank_; }
+  /// Number of ranks in MPI_COMM_WORLD.
+  int size() const { return size_; }
+
+  /// Sends `bytes` to `destination` with `tag` (standard-mode send).
+  void send(int destination, Tag tag, const std::vector<std::uint8_t>& bytes);
+  /// Receives a waiting message with `tag` from any rank into `out`; false when none is waiting.
+  bool tryReceive(Tag tag, Message& out);
+  /// Receives a waiting message of any tag from `source` (any rank when -1); false when none.
+  bool tryReceiveAny(int source, Message& out);
+  /// Waits (probe + adaptive sleep, no spinning) for a message of any tag from `source`.
+  Message receiveAny(int source);
+  /// Waits for a message with `tag` from any rank (probe + adaptive sleep).
+  Message receive(Tag tag);
+  /// The maximum of `value` over all ranks (collective).
+  int allReduceMax(int value);
+
+  /// Prints "cambrian evolve: rank R: message" to stderr and calls MPI_Abort with `code`, which
+  /// ends every rank of the job with that exit code. Never returns.
+  [[noreturn]] void abort(ExitCode code, const std::string& message) const;
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+  bool owns_ = false;
+};
+
+/// Sleeps for an adaptively growing interval: call wait() while nothing has arrived and reset()
+/// when something did. Starts at 50 us and doubles up to 1 ms.
+class Backoff {
+ public:
+  /// Sleeps for the current interval and grows it.
+  void wait();
+  /// Back to the shortest interval.
+  void reset() { micros_ = kMin; }
+
+ private:
+  static constexpr long kMin = 50, kMax = 1000;
+  long micros_ = kMin;
+};
+
+/// CPU time (user + system) this process has used so far, seconds (getrusage).
+double processCpuSeconds();
+
+}  // namespace cambrian

@@ -1,0 +1,160 @@
+#include "parallel/scheduler.hpp"
+
+#include "cambrian/error.hpp"
+#include "cambrian/rng.hpp"
+
+#include "parallel/mpi_context.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <numeric>
+
+namespace cambrian {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// seconds since `start`
+double since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// the request for individual `individual`
+EvalRequest makeRequest(const Individual& individual, std::uint64_t run_seed) {
+  EvalRequest request;
+  request.id = individual.id;
+  request.eval_seed = evaluationSeed(run_seed, individual.id);
+  request.genome = serializeGenome(individual.genome);
+  return request;
+}
+
+// stores an outcome on the individual it belongs to
+void store(Individual& individual, const Outcome& outcome, int rank) {
+  individual.outcome = outcome;
+  individual.evaluated = true;
+  individual.eval_seconds = outcome.wall_seconds;
+  individual.worker_rank = rank;
+}
+
+}  // namespace
+
+std::uint64_t evaluationSeed(std::uint64_t run_seed, std::uint64_t id) {
+  Rng rng(run_seed, RngPurpose::evaluation, 0, id);
+  return rng.nextU64();
+}
+
+std::vector<std::size_t> schedulingOrder(const Population& population) {
+  // pending individuals, biggest genome first, then by id
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < population.individuals.size(); ++i) {
+    if (!population.individuals[i].evaluated)
+      order.push_back(i);
+  }
+  auto size = [&](std::size_t i) {
+    const Genome& g = population.individuals[i].genome;
+    return g.nodes.size() + g.connections.size();
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (size(a) != size(b))
+      return size(a) > size(b);
+    return population.individuals[a].id < population.individuals[b].id;
+  });
+  return order;
+}
+
+EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_t run_seed) {
+  EvaluationSpan span;
+  span.workers = 1;
+  auto start = Clock::now();
+  // one after another, in scheduling order
+  for (std::size_t index : schedulingOrder(population)) {
+    Individual& individual = population.individuals[index];
+    EvalResult result = evaluateRequest(makeRequest(individual, run_seed), settings_, 0, std::cerr);
+    store(individual, result.outcome, 0);
+    span.busy_seconds += result.outcome.wall_seconds;
+    ++span.evaluations;
+  }
+  span.span_seconds = since(start);
+  return span;
+}
+
+MpiScheduler::MpiScheduler(MpiContext& mpi) : mpi_(mpi) {
+  if (mpi.size() < 2)
+    throw Error(ExitCode::mpi, "MpiScheduler needs at least 2 ranks");
+}
+
+int MpiScheduler::workers() const {
+  return mpi_.size() - 1;
+}
+
+EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_seed) {
+  EvaluationSpan span;
+  span.workers = workers();
+  std::vector<std::size_t> order = schedulingOrder(population);
+  std::vector<char> outstanding_for(population.individuals.size(), 0);
+  auto start = Clock::now();
+
+  // one creature to each idle worker
+  std::size_t next = 0, outstanding = 0;
+  auto hand = [&](int worker) {
+    std::size_t index = order[next++];
+    mpi_.send(worker, Tag::request,
+              encodeRequest(makeRequest(population.individuals[index], run_seed)));
+    outstanding_for[index] = 1;
+    ++outstanding;
+  };
+  for (int worker = 1; worker < mpi_.size() && next < order.size(); ++worker)
+    hand(worker);
+
+  // every result is answered with the next creature; wait by probe + sleep
+  Message message;
+  Backoff backoff;
+  while (outstanding > 0) {
+    if (!mpi_.tryReceive(Tag::result, message)) {
+      backoff.wait();
+      continue;
+    }
+    backoff.reset();
+    EvalResult result;
+    try {
+      result = decodeResult(message.bytes);
+    } catch (const Error& e) {
+      throw Error(ExitCode::mpi,
+                  "malformed result from rank " + std::to_string(message.source) + ": " + e.what());
+    }
+    // stored by id, whatever the arrival order
+    std::size_t index = 0;
+    try {
+      index = population.indexOf(result.id);
+    } catch (const std::out_of_range&) {
+      throw Error(ExitCode::mpi, "rank " + std::to_string(message.source) +
+                                     " answered for unknown creature " + std::to_string(result.id));
+    }
+    if (!outstanding_for[index]) {
+      throw Error(ExitCode::mpi, "rank " + std::to_string(message.source) +
+                                     " answered for creature " + std::to_string(result.id) +
+                                     " that was not asked for");
+    }
+    outstanding_for[index] = 0;
+    store(population.individuals[index], result.outcome, message.source);
+    span.busy_seconds += result.outcome.wall_seconds;
+    ++span.evaluations;
+    --outstanding;
+    if (next < order.size())
+      hand(message.source);
+  }
+  span.span_seconds = since(start);
+  return span;
+}
+
+void MpiScheduler::stopWorkers() {
+  if (stopped_)
+    return;
+  stopped_ = true;
+  for (int worker = 1; worker < mpi_.size(); ++worker)
+    mpi_.send(worker, Tag::stop, {});
+}
+
+}  // namespace cambrian

@@ -1,0 +1,70 @@
+// cambrian: evaluating a population — rank 0's self-scheduler over the worker ranks, or in
+// process when the job has a single rank.
+#pragma once
+
+#include "evolution/population.hpp"
+#include "parallel/worker.hpp"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace cambrian {
+
+class MpiContext;
+
+/// What evaluating one generation cost.
+struct EvaluationSpan {
+  std::size_t evaluations = 0;  ///< individuals evaluated
+  int workers = 0;              ///< ranks that evaluated
+  double span_seconds = 0;      ///< first request to last result, wall clock
+  double busy_seconds = 0;      ///< sum of the evaluations' wall times
+};
+
+/// The seed handed to the evaluation of individual `id` of a run: a pure function of both.
+std::uint64_t evaluationSeed(std::uint64_t run_seed, std::uint64_t id);
+
+/// Order in which pending individuals are handed out: longest expected first (genome nodes +
+/// connections, descending), ties by id. Returns indices into the population.
+std::vector<std::size_t> schedulingOrder(const Population& population);
+
+/// Evaluates every individual of a population that has no outcome yet; outcomes are stored by
+/// id, never by arrival order.
+class PopulationEvaluator {
+ public:
+  virtual ~PopulationEvaluator() = default;
+  /// Fills outcome, evaluated, eval_seconds and worker_rank of each unevaluated individual.
+  virtual EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) = 0;
+  /// Ranks that evaluate.
+  virtual int workers() const = 0;
+};
+
+/// Evaluates in this process, one creature after another (a job with one rank).
+class InProcessEvaluator : public PopulationEvaluator {
+ public:
+  /// `settings` are the creature settings every evaluation uses.
+  explicit InProcessEvaluator(const WorkerSettings& settings) : settings_(settings) {}
+  EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) override;
+  int workers() const override { return 1; }
+
+ private:
+  WorkerSettings settings_;
+};
+
+/// Rank 0's self-scheduler: each idle worker gets one creature (longest expected first), each
+/// result is answered with the next creature. Waits by probe + adaptive sleep, never spinning.
+/// Throws Error(mpi) when a worker sends a malformed or unexpected result.
+class MpiScheduler : public PopulationEvaluator {
+ public:
+  /// `mpi` must have at least two ranks and outlive the scheduler.
+  explicit MpiScheduler(MpiContext& mpi);
+  EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) override;
+  int workers() const override;
+  /// Sends the stop message to every worker (once; later calls do nothing).
+  void stopWorkers();
+
+ private:
+  MpiContext& mpi_;
+  bool stopped_ = false;
+};
+
+}  // namespace cambrian

@@ -1,0 +1,63 @@
+#include "parallel/worker.hpp"
+
+#include "cambrian/error.hpp"
+
+#include "parallel/mpi_context.hpp"
+
+#include <chrono>
+#include <iostream>
+#include <ostream>
+#include <stdexcept>
+
+namespace cambrian {
+
+EvalResult evaluateRequest(const EvalRequest& request, const WorkerSettings& settings, int rank,
+                           std::ostream& log) {
+  EvalResult result;
+  result.id = request.id;
+  auto start = std::chrono::steady_clock::now();
+  try {
+    // the creature, then its evaluation
+    Genome genome = deserializeGenome(request.genome.data(), request.genome.size());
+    if (settings.fail_every > 0 && request.id % settings.fail_every == 0) {
+      throw std::runtime_error(
+          "injected failure (run.fail_every = " + std::to_string(settings.fail_every) + ")");
+    }
+    result.outcome =
+        evaluate(genome, settings.limits, settings.task, settings.physics, request.eval_seed);
+  } catch (const std::exception& e) {
+    // a failed outcome, never a dead rank
+    result.outcome = Outcome{};
+    result.outcome.status = EvalStatus::failed;
+    result.outcome.fitness = kWorstFitness;
+    result.outcome.message = e.what();
+    result.outcome.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    log << "cambrian evolve: rank " << rank << ": creature " << request.id
+        << " failed: " << e.what() << std::endl;
+  }
+  return result;
+}
+
+void runWorker(MpiContext& mpi, const WorkerSettings& settings) {
+  // serve requests until told to stop
+  for (;;) {
+    Message message = mpi.receiveAny(0);
+    if (message.tag == Tag::stop)
+      return;
+    if (message.tag != Tag::request) {
+      throw Error(ExitCode::worker_failure,
+                  "unexpected message tag " + std::to_string(static_cast<int>(message.tag)));
+    }
+    EvalRequest request;
+    try {
+      request = decodeRequest(message.bytes);
+    } catch (const Error& e) {
+      throw Error(ExitCode::worker_failure, e.what());
+    }
+    EvalResult result = evaluateRequest(request, settings, mpi.rank(), std::cerr);
+    mpi.send(0, Tag::result, encodeResult(result));
+  }
+}
+
+}  // namespace cambrian
