@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace cambrian {
@@ -468,6 +469,71 @@ TEST(Develop, SameGenomeDevelopsIdentically) {
   const BodyPlan a = develop(genome, GenomeLimits{});
   const BodyPlan b = develop(genome, GenomeLimits{});
   expectSamePlan(a, b);
+}
+
+TEST(Develop, TenThousandRandomGenomesDevelopWithinLimits) {
+  const GenomeLimits limits;
+  int truncated = 0, reflected = 0;
+  for (std::uint64_t individual = 0; individual < 10000; ++individual) {
+    const Genome genome = randomGenome(limits, 2024, 0, individual);
+    BodyPlan plan;
+    ASSERT_NO_THROW(plan = develop(genome, limits)) << "individual " << individual;
+    // the full invariant check on a sample keeps the test fast; the cheap checks on all
+    ASSERT_GE(plan.parts.size(), 1u);
+    ASSERT_LE(static_cast<int>(plan.parts.size()), limits.max_parts);
+    for (const NeuronPlan& neuron : plan.neurons) {
+      for (const Wire& wire : neuron.inputs) {
+        ASSERT_LT(wire.signal, plan.signalCount()) << "individual " << individual;
+      }
+    }
+    for (const EffectorPlan& effector : plan.effectors) {
+      ASSERT_LT(effector.input.signal, plan.signalCount()) << "individual " << individual;
+    }
+    for (const PartPlan& part : plan.parts) {
+      ASSERT_TRUE(finite(part.pose.position) && finite(part.pose.rotation));
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_GE(part.size[k], limits.min_part_size);
+        ASSERT_LE(part.size[k], limits.max_part_size);
+      }
+      reflected += part.reflected ? 1 : 0;
+    }
+    truncated += plan.truncated ? 1 : 0;
+    if (individual % 10 == 0) {
+      expectPlanConsistent(plan, limits);
+      if (::testing::Test::HasFailure()) {
+        FAIL() << "individual " << individual;
+      }
+    }
+  }
+  // the sample exercises the interesting paths
+  EXPECT_GT(reflected, 0);
+  EXPECT_GT(truncated, 0);
+}
+
+// the hand-written creature file jobs/creatures/<name>.genome
+Genome creature(const std::string& name) {
+  return readGenomeFile(std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/" + name + ".genome");
+}
+
+TEST(Develop, HandWrittenCreaturesHaveTheirPartsAndJoints) {
+  const GenomeLimits limits;
+  const struct {
+    const char* name;
+    int parts;
+  } creatures[] = {{"single_block", 1}, {"pole", 2}, {"walker4", 5}, {"snake", 6}};
+  for (const auto& expected : creatures) {
+    const BodyPlan plan = develop(creature(expected.name), limits);
+    EXPECT_EQ(static_cast<int>(plan.parts.size()), expected.parts) << expected.name;
+    EXPECT_EQ(plan.jointCount(), expected.parts - 1) << expected.name;
+    EXPECT_FALSE(plan.truncated) << expected.name;
+    expectPlanConsistent(plan, limits);
+  }
+  // walker4's legs are mirror images across both body planes
+  const BodyPlan walker = develop(creature("walker4"), limits);
+  const Vec3 c = walker.parts[1].pose.position;
+  EXPECT_LT(norm(walker.parts[2].pose.position - Vec3{-c.x, c.y, c.z}), 1e-12);
+  EXPECT_LT(norm(walker.parts[3].pose.position - Vec3{c.x, -c.y, c.z}), 1e-12);
+  EXPECT_LT(norm(walker.parts[4].pose.position - Vec3{-c.x, -c.y, c.z}), 1e-12);
 }
 
 TEST(Develop, BrokenGenomesAndLimitsThrowNamingTheField) {
