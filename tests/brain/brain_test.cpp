@@ -6,6 +6,8 @@
 #include "cambrian/error.hpp"
 #include "cambrian/genome.hpp"
 
+#include "brain/allocation_counter.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -307,6 +309,24 @@ TEST(Brain, DevelopedRandomGenomesCompileAndStayFinite) {
     for (double command : brain.effectors()) {
       ASSERT_LE(std::fabs(command), 1.0) << "individual " << individual;
     }
+  }
+}
+
+TEST(Brain, StepDoesNotAllocate) {
+  const GenomeLimits limits;
+  for (std::uint64_t individual = 0; individual < 20; ++individual) {
+    const BodyPlan plan = develop(randomGenome(limits, 5, 0, individual), limits);
+    Brain brain(plan, 1.0 / 240);
+    const long before = allocationCount();
+    for (int k = 0; k < 500; ++k) {
+      for (double& sensor : brain.sensors()) {
+        sensor = 0.5 * std::sin(0.01 * k);
+      }
+      brain.step();
+    }
+    brain.reset();
+    brain.step();
+    EXPECT_EQ(allocationCount(), before) << "individual " << individual;
   }
 }
 
