@@ -202,10 +202,10 @@ Genome mutate(const Genome& parent, const GenomeLimits& limits, const MutationSe
   }
   mutateNeuronList(g.brain, limits.max_brain_neurons, limits, settings, rng);
 
-  // unconnected nodes: kept as hidden genes (Chaumont) or collected
+  // within limits, then unconnected nodes kept as hidden genes (Chaumont) or collected
+  fitToLimits(g, limits);
   if (!settings.keep_unconnected)
     g = removeUnreachableNodes(g);
-  fitToLimits(g, limits);
   return g;
 }
 

@@ -76,10 +76,10 @@ class Reader {
     std::size_t at = offset_;
     std::uint32_t n = u32();
     if (static_cast<std::uint64_t>(n) * element_bytes > remaining()) {
-      throw InputError("genome bytes: truncated in " + context_ + " (count " + std::to_string(n) +
-                       " at offset " + std::to_string(at) + " needs more than the " +
-                       std::to_string(remaining()) + " bytes left of " + std::to_string(size_) +
-                       ")");
+      throw InputError("genome bytes: truncated in " + context_ + " (offset " + std::to_string(at) +
+                       " of " + std::to_string(size_) + ": count " + std::to_string(n) +
+                       " needs at least " + std::to_string(n * element_bytes) + " more bytes, " +
+                       std::to_string(remaining()) + " left)");
     }
     return n;
   }
