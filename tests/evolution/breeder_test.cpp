@@ -1,0 +1,192 @@
+#include "evolution/breeder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+namespace cambrian {
+namespace {
+
+// a deterministic stand-in for evaluation: fitness from the genome's size and id
+Outcome fakeOutcome(const Individual& individual) {
+  Outcome outcome;
+  double side = 0;
+  for (const PartGene& node : individual.genome.nodes)
+    side += node.dimensions.x;
+  outcome.fitness = side + 0.001 * static_cast<double>(individual.id % 7);
+  return outcome;
+}
+
+// fills every missing outcome, in the given order of indices
+void fill(Population& population, const std::vector<std::size_t>& order) {
+  for (std::size_t index : order) {
+    Individual& individual = population.individuals[index];
+    if (individual.evaluated)
+      continue;
+    individual.outcome = fakeOutcome(individual);
+    individual.evaluated = true;
+  }
+}
+
+// indices 0..n-1, forwards or backwards
+std::vector<std::size_t> indices(std::size_t n, bool reverse) {
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i)
+    order[i] = reverse ? n - 1 - i : i;
+  return order;
+}
+
+EvolutionSettings smallRun() {
+  EvolutionSettings s;
+  s.population = 20;
+  s.generations = 4;
+  s.seed = 11;
+  return s;
+}
+
+TEST(BreedingPlan, SplitsByTheFractionsAndSumsToThePopulation) {
+  EvolutionSettings s;
+  s.population = 100;
+  BreedingPlan plan = planBreeding(s);
+  EXPECT_EQ(plan.elites, 20);
+  EXPECT_EQ(plan.mutations, 32);
+  EXPECT_EQ(plan.crossovers, 24);
+  EXPECT_EQ(plan.grafts, 24);
+  for (int p = 2; p <= 301; p += 7) {
+    s.population = p;
+    EXPECT_EQ(planBreeding(s).total(), p) << "population " << p;
+    EXPECT_GE(planBreeding(s).grafts, 0);
+  }
+  s.population = 10;
+  s.elite_fraction = 0;
+  s.mutation_fraction = 1;
+  s.crossover_fraction = s.graft_fraction = 0;
+  plan = planBreeding(s);
+  EXPECT_EQ(plan.elites, 0);
+  EXPECT_EQ(plan.mutations, 10);
+}
+
+TEST(Breeder, InitialPopulationIsRandomWithIncreasingIds) {
+  Breeder breeder(smallRun(), GenomeLimits{});
+  Population p = breeder.initialPopulation();
+  ASSERT_EQ(p.individuals.size(), 20u);
+  for (std::size_t i = 0; i < p.individuals.size(); ++i) {
+    EXPECT_EQ(p.individuals[i].id, i);
+    EXPECT_EQ(p.individuals[i].origin, Origin::random);
+    EXPECT_FALSE(p.individuals[i].evaluated);
+  }
+  EXPECT_EQ(breeder.nextId(), 20u);
+}
+
+TEST(Breeder, SeededPopulationStartsWithTheSeedsThenMutatedCopies) {
+  Genome seed = randomGenome(GenomeLimits{}, 99);
+  Breeder breeder(smallRun(), GenomeLimits{});
+  Population p = breeder.initialPopulation({seed});
+  EXPECT_EQ(p.individuals[0].origin, Origin::seed);
+  EXPECT_EQ(p.individuals[0].genome, seed);
+  for (std::size_t i = 1; i < p.individuals.size(); ++i) {
+    EXPECT_EQ(p.individuals[i].origin, Origin::mutation);
+    EXPECT_EQ(p.individuals[i].parents, (std::vector<std::uint64_t>{0}));
+  }
+}
+
+TEST(Breeder, ElitesAreTheBestCopiedWithTheirOutcomesAndNotReEvaluated) {
+  Breeder breeder(smallRun(), GenomeLimits{});
+  Population first = breeder.initialPopulation();
+  fill(first, indices(first.individuals.size(), false));
+  std::vector<std::size_t> ranking = first.ranking();
+  Population second = breeder.nextGeneration(first);
+  ASSERT_EQ(second.individuals.size(), 20u);
+  int elites = breeder.plan().elites;
+  ASSERT_EQ(elites, 4);
+  for (int e = 0; e < elites; ++e) {
+    const Individual& copy = second.individuals[static_cast<std::size_t>(e)];
+    const Individual& original = first.individuals[ranking[static_cast<std::size_t>(e)]];
+    EXPECT_EQ(copy.origin, Origin::elite);
+    EXPECT_EQ(copy.parents, (std::vector<std::uint64_t>{original.id}));
+    EXPECT_EQ(copy.genome, original.genome);
+    EXPECT_TRUE(copy.evaluated);
+    EXPECT_EQ(copy.outcome.fitness, original.outcome.fitness);
+    EXPECT_EQ(copy.worker_rank, -1);
+  }
+  // offspring wait for evaluation, in plan order
+  for (std::size_t i = static_cast<std::size_t>(elites); i < second.individuals.size(); ++i) {
+    EXPECT_FALSE(second.individuals[i].evaluated);
+  }
+  EXPECT_EQ(second.individuals[4].origin, Origin::mutation);
+  EXPECT_EQ(second.individuals.back().origin, Origin::graft);
+  EXPECT_EQ(second.individuals.back().parents.size(), 2u);
+}
+
+TEST(Breeder, BestFitnessNeverDrops) {
+  Breeder breeder(smallRun(), GenomeLimits{});
+  Population p = breeder.initialPopulation();
+  double best = -1;
+  for (int g = 0; g < 6; ++g) {
+    fill(p, indices(p.individuals.size(), false));
+    double now = p.individuals[p.ranking().front()].fitness();
+    EXPECT_GE(now, best);
+    best = now;
+    p = breeder.nextGeneration(p);
+  }
+}
+
+TEST(Breeder, GenerationsDoNotDependOnTheOrderOutcomesArrive) {
+  Breeder forward(smallRun(), GenomeLimits{}), backward(smallRun(), GenomeLimits{});
+  Population a = forward.initialPopulation(), b = backward.initialPopulation();
+  for (int g = 0; g < 3; ++g) {
+    fill(a, indices(a.individuals.size(), false));
+    fill(b, indices(b.individuals.size(), true));
+    a = forward.nextGeneration(a);
+    b = backward.nextGeneration(b);
+    ASSERT_EQ(a.individuals.size(), b.individuals.size());
+    for (std::size_t i = 0; i < a.individuals.size(); ++i) {
+      EXPECT_EQ(a.individuals[i].id, b.individuals[i].id);
+      EXPECT_EQ(a.individuals[i].parents, b.individuals[i].parents);
+      EXPECT_EQ(a.individuals[i].genome, b.individuals[i].genome);
+    }
+  }
+}
+
+TEST(Breeder, ADifferentSeedBreedsDifferently) {
+  EvolutionSettings other = smallRun();
+  other.seed = 12;
+  Breeder a(smallRun(), GenomeLimits{}), b(other, GenomeLimits{});
+  Population pa = a.initialPopulation(), pb = b.initialPopulation();
+  bool differs = false;
+  for (std::size_t i = 0; i < pa.individuals.size(); ++i) {
+    differs = differs || !(pa.individuals[i].genome == pb.individuals[i].genome);
+  }
+  EXPECT_TRUE(differs);
+}
+
+TEST(Breeder, IdsAreUniqueAndIncreaseAcrossTheRun) {
+  Breeder breeder(smallRun(), GenomeLimits{});
+  Population p = breeder.initialPopulation();
+  std::set<std::uint64_t> seen;
+  std::uint64_t last = 0;
+  bool first = true;
+  for (int g = 0; g < 4; ++g) {
+    for (const Individual& individual : p.individuals) {
+      EXPECT_TRUE(seen.insert(individual.id).second) << "id " << individual.id;
+      if (!first) {
+        EXPECT_GT(individual.id, last);
+      }
+      last = individual.id;
+      first = false;
+      EXPECT_EQ(individual.generation, static_cast<std::uint64_t>(g));
+    }
+    fill(p, indices(p.individuals.size(), false));
+    p = breeder.nextGeneration(p);
+  }
+}
+
+TEST(Breeder, RefusesAPartlyEvaluatedGeneration) {
+  Breeder breeder(smallRun(), GenomeLimits{});
+  Population p = breeder.initialPopulation();
+  EXPECT_THROW(breeder.nextGeneration(p), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cambrian
