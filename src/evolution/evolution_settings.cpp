@@ -67,8 +67,9 @@ void validateEvolutionSettings(const EvolutionSettings& s) {
   requireProbability("crossover_fraction", s.crossover_fraction);
   requireProbability("graft_fraction", s.graft_fraction);
   double sum = s.mutation_fraction + s.crossover_fraction + s.graft_fraction;
-  require(std::fabs(sum - 1) <= 1e-9, "mutation_fraction + crossover_fraction + graft_fraction",
-          sum, "must sum to 1");
+  require(std::fabs(sum - 1) <= 1e-9,
+          "mutation_fraction + evolution.crossover_fraction + evolution.graft_fraction", sum,
+          "must sum to 1");
   requireProbability("post_crossover_mutation_chance", s.post_crossover_mutation_chance);
   requireProbability("post_crossover_mutation_rate", s.post_crossover_mutation_rate);
 
