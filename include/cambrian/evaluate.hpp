@@ -51,6 +51,12 @@ struct TaskSettings {
 
 const char* taskName(TaskKind kind);
 
+/// Whether a genome makes a body that may be born: it validates, develops into at least one
+/// part and does not overlap itself (Chaumont et al. 5.5: new individuals are tested for
+/// self-collision and redrawn until valid). Cheap: no stepping. `reason` gets the failed rule.
+bool isViable(const Genome& genome, const GenomeLimits& limits, const PhysicsSettings& physics,
+              std::string* reason = nullptr);
+
 /// Evaluates one creature in a fresh world. Never throws for a bad creature: a rule-breaking
 /// creature gets a status and kWorstFitness. `eval_seed` feeds any randomness inside.
 Outcome evaluate(const Genome& genome, const GenomeLimits& limits, const TaskSettings& task,

@@ -144,7 +144,7 @@ struct GenomeLimits {
   int max_nodes = 20;             ///< genes (graph nodes)
   int max_connections = 40;       ///< connections in the graph
   int max_parts = 30;             ///< part instances after development
-  int max_recursive_limit = 4;    ///< per node
+  int max_recursive_limit = 8;    ///< per node
   int max_neurons_per_node = 6;
   int max_brain_neurons = 8;
   int max_inputs = 3;              ///< inputs stored per neuron

@@ -129,6 +129,27 @@ const char* taskName(TaskKind kind) {
   return "unknown";
 }
 
+bool isViable(const Genome& genome, const GenomeLimits& limits, const PhysicsSettings& physics,
+              std::string* reason) {
+  try {
+    validateGenome(genome, limits);
+    BodyPlan plan = develop(genome, limits);
+    if (plan.parts.empty()) {
+      if (reason) *reason = "no parts";
+      return false;
+    }
+    Simulation simulation(plan, physics);
+    if (simulation.status() != EvalStatus::ok) {
+      if (reason) *reason = std::string(statusName(simulation.status())) + ": " + simulation.message();
+      return false;
+    }
+    return true;
+  } catch (const std::exception& e) {
+    if (reason) *reason = e.what();
+    return false;
+  }
+}
+
 Outcome evaluate(const Genome& genome, const GenomeLimits& limits, const TaskSettings& task,
                  const PhysicsSettings& physics, std::uint64_t eval_seed) {
   auto start = Clock::now();

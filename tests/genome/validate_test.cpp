@@ -29,8 +29,28 @@ Genome sampleGenome() {
   return g;
 }
 
+// the limits the expected messages quote, set explicitly (independent of the defaults)
+GenomeLimits quotedLimits() {
+  GenomeLimits limits;
+  limits.max_nodes = 20;
+  limits.max_connections = 40;
+  limits.max_recursive_limit = 4;
+  limits.max_neurons_per_node = 6;
+  limits.max_brain_neurons = 8;
+  limits.max_inputs = 3;
+  limits.min_part_size = 0.05;
+  limits.max_part_size = 1.5;
+  limits.min_density = 200;
+  limits.max_density = 3000;
+  limits.max_weight = 5;
+  limits.min_scale = 0.5;
+  limits.max_scale = 2;
+  limits.max_frequency = 4;
+  return limits;
+}
+
 // the validation message of a genome, or "" when it is valid
-std::string failure(const Genome& genome, const GenomeLimits& limits = {}) {
+std::string failure(const Genome& genome, const GenomeLimits& limits = quotedLimits()) {
   try {
     validateGenome(genome, limits);
   } catch (const GenomeError& e) {
@@ -126,7 +146,7 @@ TEST(ValidateGenome, LimitsAreConfigurable) {
   Genome g = sampleGenome();
   g.nodes[1].recursive_limit = 6;
   EXPECT_NE(failure(g), "");
-  GenomeLimits limits;
+  GenomeLimits limits = quotedLimits();
   limits.max_recursive_limit = 6;
   EXPECT_EQ(failure(g, limits), "");
 }

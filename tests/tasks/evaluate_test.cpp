@@ -52,14 +52,27 @@ TEST(Evaluate, NoEffectorsNoTravel) {
 TEST(Evaluate, PassiveRandomCreaturesStayPut) {
   GenomeLimits limits;
   int evaluated = 0;
-  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 200 && evaluated < 10; ++seed) {
     Genome passive = withoutEffectors(randomGenome(limits, seed));
+    if (!isViable(passive, limits, PhysicsSettings{})) continue;
     Outcome outcome = evaluate(passive, limits, shortWalk(), PhysicsSettings{});
-    if (outcome.status != EvalStatus::ok) continue;
+    ASSERT_EQ(outcome.status, EvalStatus::ok) << "seed " << seed << ": " << outcome.message;
     ++evaluated;
     EXPECT_LT(outcome.measure("distance"), 0.05) << "seed " << seed;
   }
-  EXPECT_GT(evaluated, 6);
+  EXPECT_EQ(evaluated, 10);
+}
+
+// viability: valid bodies pass, overlapping ones fail with the reason
+TEST(Evaluate, Viability) {
+  Genome pole = readGenomeFile(kCreatures + "pole.genome");
+  std::string reason;
+  EXPECT_TRUE(isViable(pole, GenomeLimits{}, PhysicsSettings{}, &reason)) << reason;
+  pole.connections.push_back(pole.connections[0]);
+  EXPECT_FALSE(isViable(pole, GenomeLimits{}, PhysicsSettings{}, &reason));
+  EXPECT_NE(reason.find("self_penetration"), std::string::npos) << reason;
+  pole.nodes[0].dimensions.y = -1;
+  EXPECT_FALSE(isViable(pole, GenomeLimits{}, PhysicsSettings{}, &reason));
 }
 
 // the same genome evaluated twice gives bit-identical outcomes
