@@ -155,7 +155,7 @@ Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_
     ConnectionGene c = randomConnectionGene(from, to, limits, rng);
     // a self-connection needs a recursive limit above 1 to repeat
     if (from == to && limits.max_recursive_limit >= 2) {
-      int hi = std::min(4, limits.max_recursive_limit);
+      int hi = std::min(3, limits.max_recursive_limit);
       genome.nodes[to].recursive_limit = static_cast<std::uint8_t>(rng.between(2, hi));
       c.reflection = 0;
     }
