@@ -264,8 +264,15 @@ int runEvolve(int argc, char** argv) {
                 << s.evolution.population << ", generations " << s.evolution.generations
                 << ", seed " << s.evolution.seed << std::endl;
     }
+    // Chaumont 5.5: new bodies that overlap themselves are redrawn before evaluation
+    RunSettings run = s.run;
+    if (s.creature.task.kind != TaskKind::synthetic) {
+      run.viable = [&s](const Genome& genome) {
+        return isViable(genome, s.creature.limits, s.creature.physics);
+      };
+    }
     RunResult result =
-        runEvolution(s.evolution, s.creature.limits, setup.seeds, *evaluator, s.run, std::cout);
+        runEvolution(s.evolution, s.creature.limits, setup.seeds, *evaluator, run, std::cout);
     if (scheduler)
       scheduler->stopWorkers();
 

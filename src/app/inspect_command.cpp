@@ -1,13 +1,14 @@
 // cambrian inspect: print a genome and the body it develops into.
-#include <cstdio>
-#include <iostream>
-
 #include "cambrian/body_plan.hpp"
 #include "cambrian/error.hpp"
 #include "cambrian/genome.hpp"
+
 #include "commands.hpp"
 #include "options.hpp"
 #include "tasks/juries.hpp"
+
+#include <cstdio>
+#include <iostream>
 
 namespace cambrian {
 
@@ -25,14 +26,14 @@ int runInspect(int argc, char** argv) {
   std::string genome_path, config_path;
 
   // options: the genome file is positional
-  po::options_description cli("cambrian inspect: print a genome and its body statistics\n\n"
-                              "usage: cambrian inspect FILE [--config FILE] [settings]\n\n"
-                              "Options");
-  cli.add_options()
-    ("help,h", "show this help")
-    ("genome,g", po::value(&genome_path), "genome file (text or binary)")
-    ("config,c", po::value(&config_path), "INI file with [genome] limits")
-    ("body-only", "print only the body statistics, not the genome text");
+  po::options_description cli(
+      "cambrian inspect: print a genome and its body statistics\n\n"
+      "usage: cambrian inspect FILE [--config FILE] [settings]\n\n"
+      "Options");
+  cli.add_options()("help,h", "show this help")("genome,g", po::value(&genome_path),
+                                                "genome file (text or binary)")(
+      "config,c", po::value(&config_path), "INI file with [genome] limits")(
+      "body-only", "print only the body statistics, not the genome text");
   po::positional_options_description positional;
   positional.add("genome", 1);
   po::options_description creature = creatureOptions(settings);
@@ -42,11 +43,13 @@ int runInspect(int argc, char** argv) {
     return 0;
   }
   finishCreatureSettings(settings);
-  if (genome_path.empty()) throw Error(ExitCode::usage, "give a genome file to inspect");
+  if (genome_path.empty())
+    throw Error(ExitCode::usage, "give a genome file to inspect");
 
   // the genome, checked against the limits
   Genome genome = readGenomeFile(genome_path);
-  if (!vm.count("body-only")) std::cout << genomeToText(genome);
+  if (!vm.count("body-only"))
+    std::cout << genomeToText(genome);
   try {
     validateGenome(genome, settings.limits);
   } catch (const GenomeError& e) {
@@ -55,15 +58,16 @@ int runInspect(int argc, char** argv) {
 
   // the body it develops into
   BodyPlan plan = develop(genome, settings.limits);
-  std::printf("\n# body: %zu parts, %d joints, %d degrees of freedom, %zu sensors, %zu neurons, "
-              "%zu effectors%s\n",
-              plan.parts.size(), plan.jointCount(), plan.degreesOfFreedom(), plan.sensors.size(),
-              plan.neurons.size(), plan.effectors.size(),
-              plan.truncated ? " (truncated at genome.max_parts)" : "");
+  std::printf(
+      "\n# body: %zu parts, %d joints, %d degrees of freedom, %zu sensors, %zu neurons, "
+      "%zu effectors%s\n",
+      plan.parts.size(), plan.jointCount(), plan.degreesOfFreedom(), plan.sensors.size(),
+      plan.neurons.size(), plan.effectors.size(),
+      plan.truncated ? " (truncated at genome.max_parts)" : "");
   std::printf("# mass %.4g kg, volume %.4g m^3, body length %.4g m\n", plan.totalMass(),
               plan.totalVolume(), bodyLength(plan));
-  std::printf("# %4s %4s %6s  %-9s %-23s %8s %8s\n", "part", "node", "parent", "joint",
-              "size (m)", "mass", "x-sect");
+  std::printf("# %4s %4s %6s  %-9s %-23s %8s %8s\n", "part", "node", "parent", "joint", "size (m)",
+              "mass", "x-sect");
   for (std::size_t i = 0; i < plan.parts.size(); ++i) {
     const PartPlan& p = plan.parts[i];
     std::printf("# %4zu %4d %6d  %-9s %6.3f %6.3f %6.3f   %8.3f %8.4f%s\n", i, p.node, p.parent,

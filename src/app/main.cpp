@@ -1,11 +1,12 @@
 // cambrian: main — dispatches to the subcommands and turns errors into documented exit codes.
+#include "cambrian/error.hpp"
+#include "cambrian/version.hpp"
+
+#include "commands.hpp"
+
 #include <cstring>
 #include <iostream>
 #include <string>
-
-#include "cambrian/error.hpp"
-#include "cambrian/version.hpp"
-#include "commands.hpp"
 
 namespace {
 
@@ -33,9 +34,12 @@ int main(int argc, char** argv) {
 
   // subcommands see their own name as argv[0]
   try {
-    if (command == "simulate") return cambrian::runSimulate(argc - 1, argv + 1);
-    if (command == "inspect") return cambrian::runInspect(argc - 1, argv + 1);
-    if (command == "evolve") return cambrian::runEvolve(argc - 1, argv + 1);
+    if (command == "simulate")
+      return cambrian::runSimulate(argc - 1, argv + 1);
+    if (command == "inspect")
+      return cambrian::runInspect(argc - 1, argv + 1);
+    if (command == "evolve")
+      return cambrian::runEvolve(argc - 1, argv + 1);
     if (command == "version" || command == "--version") {
       std::cout << "cambrian " << cambrian::kVersion << " (" << cambrian::kGitHash << ")\n";
       return 0;

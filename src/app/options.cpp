@@ -1,10 +1,10 @@
 #include "options.hpp"
 
+#include "cambrian/error.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
-
-#include "cambrian/error.hpp"
 
 namespace cambrian {
 
@@ -26,95 +26,93 @@ po::options_description creatureOptions(CreatureSettings& s) {
 
   // genome limits
   po::options_description genome("[genome] limits");
-  genome.add_options()
-    ("genome.max_nodes", po::value(&s.limits.max_nodes)->default_value(s.limits.max_nodes),
-     "maximum genes (graph nodes) per genome")
-    ("genome.max_connections",
-     po::value(&s.limits.max_connections)->default_value(s.limits.max_connections),
-     "maximum connections per genome")
-    ("genome.max_parts", po::value(&s.limits.max_parts)->default_value(s.limits.max_parts),
-     "maximum body parts after development")
-    ("genome.max_recursive_limit",
-     po::value(&s.limits.max_recursive_limit)->default_value(s.limits.max_recursive_limit),
-     "largest recursive limit of a node")
-    ("genome.max_neurons_per_node",
-     po::value(&s.limits.max_neurons_per_node)->default_value(s.limits.max_neurons_per_node),
-     "local neurons per node")
-    ("genome.max_brain_neurons",
-     po::value(&s.limits.max_brain_neurons)->default_value(s.limits.max_brain_neurons),
-     "global (brain) neurons")
-    ("genome.min_part_size",
-     po::value(&s.limits.min_part_size)->default_value(s.limits.min_part_size),
-     "smallest box side, m")
-    ("genome.max_part_size",
-     po::value(&s.limits.max_part_size)->default_value(s.limits.max_part_size),
-     "largest box side, m");
+  genome.add_options()("genome.max_nodes",
+                       po::value(&s.limits.max_nodes)->default_value(s.limits.max_nodes),
+                       "maximum genes (graph nodes) per genome")(
+      "genome.max_connections",
+      po::value(&s.limits.max_connections)->default_value(s.limits.max_connections),
+      "maximum connections per genome")(
+      "genome.max_parts", po::value(&s.limits.max_parts)->default_value(s.limits.max_parts),
+      "maximum body parts after development")(
+      "genome.max_recursive_limit",
+      po::value(&s.limits.max_recursive_limit)->default_value(s.limits.max_recursive_limit),
+      "largest recursive limit of a node")(
+      "genome.max_neurons_per_node",
+      po::value(&s.limits.max_neurons_per_node)->default_value(s.limits.max_neurons_per_node),
+      "local neurons per node")(
+      "genome.max_brain_neurons",
+      po::value(&s.limits.max_brain_neurons)->default_value(s.limits.max_brain_neurons),
+      "global (brain) neurons")(
+      "genome.min_part_size",
+      po::value(&s.limits.min_part_size)->default_value(s.limits.min_part_size),
+      "smallest box side, m")(
+      "genome.max_part_size",
+      po::value(&s.limits.max_part_size)->default_value(s.limits.max_part_size),
+      "largest box side, m");
   all.add(genome);
 
   // physics
   po::options_description physics("[physics] world");
-  physics.add_options()
-    ("physics.time_step", po::value(&s.physics.time_step)->default_value(s.physics.time_step),
-     "fixed physics step, s")
-    ("physics.gravity", po::value(&s.physics.gravity)->default_value(s.physics.gravity),
-     "gravity, m/s^2 (downwards)")
-    ("physics.ground_friction",
-     po::value(&s.physics.ground_friction)->default_value(s.physics.ground_friction),
-     "ground friction coefficient")
-    ("physics.restitution",
-     po::value(&s.physics.restitution)->default_value(s.physics.restitution),
-     "restitution of contacts")
-    ("physics.joint_damping",
-     po::value(&s.physics.joint_damping)->default_value(s.physics.joint_damping),
-     "passive joint damping, N m s/rad")
-    ("physics.strength_per_area",
-     po::value(&s.physics.strength_per_area)->default_value(s.physics.strength_per_area),
-     "joint torque per m^2 of the smaller cross-section, N m/m^2")
-    ("physics.solver_iterations",
-     po::value(&s.physics.solver_iterations)->default_value(s.physics.solver_iterations),
-     "constraint solver iterations per step")
-    ("physics.max_speed", po::value(&s.physics.max_speed)->default_value(s.physics.max_speed),
-     "a part faster than this has exploded, m/s")
-    ("physics.max_displacement",
-     po::value(&s.physics.max_displacement)->default_value(s.physics.max_displacement),
-     "a part farther than this from its start has exploded, m")
-    ("physics.penetration_tolerance",
-     po::value(&s.physics.penetration_tolerance)->default_value(s.physics.penetration_tolerance),
-     "overlap allowed between non-adjacent parts at birth, m")
-    ("physics.max_wall_seconds",
-     po::value(&s.physics.max_wall_seconds)->default_value(s.physics.max_wall_seconds),
-     "wall-clock bound of one evaluation, s (0 = none)");
+  physics.add_options()("physics.time_step",
+                        po::value(&s.physics.time_step)->default_value(s.physics.time_step),
+                        "fixed physics step, s")(
+      "physics.gravity", po::value(&s.physics.gravity)->default_value(s.physics.gravity),
+      "gravity, m/s^2 (downwards)")(
+      "physics.ground_friction",
+      po::value(&s.physics.ground_friction)->default_value(s.physics.ground_friction),
+      "ground friction coefficient")(
+      "physics.restitution",
+      po::value(&s.physics.restitution)->default_value(s.physics.restitution),
+      "restitution of contacts")(
+      "physics.joint_damping",
+      po::value(&s.physics.joint_damping)->default_value(s.physics.joint_damping),
+      "passive joint damping, N m s/rad")(
+      "physics.strength_per_area",
+      po::value(&s.physics.strength_per_area)->default_value(s.physics.strength_per_area),
+      "joint torque per m^2 of the smaller cross-section, N m/m^2")(
+      "physics.solver_iterations",
+      po::value(&s.physics.solver_iterations)->default_value(s.physics.solver_iterations),
+      "constraint solver iterations per step")(
+      "physics.max_speed", po::value(&s.physics.max_speed)->default_value(s.physics.max_speed),
+      "a part faster than this has exploded, m/s")(
+      "physics.max_displacement",
+      po::value(&s.physics.max_displacement)->default_value(s.physics.max_displacement),
+      "a part farther than this from its start has exploded, m")(
+      "physics.penetration_tolerance",
+      po::value(&s.physics.penetration_tolerance)->default_value(s.physics.penetration_tolerance),
+      "overlap allowed between non-adjacent parts at birth, m")(
+      "physics.max_wall_seconds",
+      po::value(&s.physics.max_wall_seconds)->default_value(s.physics.max_wall_seconds),
+      "wall-clock bound of one evaluation, s (0 = none)");
   all.add(physics);
 
   // task
   po::options_description task("[task] what is measured");
-  task.add_options()
-    ("task.name", po::value(&s.task_name)->default_value(s.task_name),
-     "walk | jump | synthetic")
-    ("task.evaluation_time",
-     po::value(&s.task.evaluation_time)->default_value(s.task.evaluation_time),
-     "measured time, s")
-    ("task.settle_time", po::value(&s.task.settle_time)->default_value(s.task.settle_time),
-     "brain off before the trial, s")
-    ("task.trial_time", po::value(&s.task.trial_time)->default_value(s.task.trial_time),
-     "brain on, unmeasured, s")
-    ("task.resettle_time",
-     po::value(&s.task.resettle_time)->default_value(s.task.resettle_time),
-     "brain off again before measuring, s")
-    ("task.normalisation", po::value(&s.normalisation_name)->default_value(s.normalisation_name),
-     "walk fitness: none | chaumont | volume")
-    ("task.chaumont_k", po::value(&s.task.chaumont_k)->default_value(s.task.chaumont_k),
-     "k of the k^N complexity bonus (chaumont normalisation)")
-    ("task.synthetic_cost_us",
-     po::value(&s.task.synthetic_cost_us)->default_value(s.task.synthetic_cost_us),
-     "synthetic task: busy work per evaluation, microseconds")
-    ("task.synthetic_cost_per_gene_us",
-     po::value(&s.task.synthetic_cost_per_gene_us)
-         ->default_value(s.task.synthetic_cost_per_gene_us),
-     "synthetic task: extra busy work per genome node, microseconds")
-    ("task.synthetic_noise",
-     po::value(&s.task.synthetic_noise)->default_value(s.task.synthetic_noise),
-     "synthetic task: relative spread of the cost (0..1)");
+  task.add_options()("task.name", po::value(&s.task_name)->default_value(s.task_name),
+                     "walk | jump | synthetic")(
+      "task.evaluation_time",
+      po::value(&s.task.evaluation_time)->default_value(s.task.evaluation_time),
+      "measured time, s")("task.settle_time",
+                          po::value(&s.task.settle_time)->default_value(s.task.settle_time),
+                          "brain off before the trial, s")(
+      "task.trial_time", po::value(&s.task.trial_time)->default_value(s.task.trial_time),
+      "brain on, unmeasured, s")(
+      "task.resettle_time", po::value(&s.task.resettle_time)->default_value(s.task.resettle_time),
+      "brain off again before measuring, s")(
+      "task.normalisation", po::value(&s.normalisation_name)->default_value(s.normalisation_name),
+      "walk fitness: none | chaumont | volume")(
+      "task.chaumont_k", po::value(&s.task.chaumont_k)->default_value(s.task.chaumont_k),
+      "k of the k^N complexity bonus (chaumont normalisation)")(
+      "task.synthetic_cost_us",
+      po::value(&s.task.synthetic_cost_us)->default_value(s.task.synthetic_cost_us),
+      "synthetic task: busy work per evaluation, microseconds")(
+      "task.synthetic_cost_per_gene_us",
+      po::value(&s.task.synthetic_cost_per_gene_us)
+          ->default_value(s.task.synthetic_cost_per_gene_us),
+      "synthetic task: extra busy work per genome node, microseconds")(
+      "task.synthetic_noise",
+      po::value(&s.task.synthetic_noise)->default_value(s.task.synthetic_noise),
+      "synthetic task: relative spread of the cost (0..1)");
   all.add(task);
   return all;
 }
@@ -149,8 +147,8 @@ void finishCreatureSettings(CreatureSettings& s) {
           g.max_connections, "must be in 0..4000");
   require(g.max_parts >= 1 && g.max_parts <= 1000, "genome.max_parts", g.max_parts,
           "must be in 1..1000");
-  require(g.max_recursive_limit >= 1 && g.max_recursive_limit <= 64,
-          "genome.max_recursive_limit", g.max_recursive_limit, "must be in 1..64");
+  require(g.max_recursive_limit >= 1 && g.max_recursive_limit <= 64, "genome.max_recursive_limit",
+          g.max_recursive_limit, "must be in 1..64");
   require(g.max_neurons_per_node >= 0 && g.max_neurons_per_node <= 64,
           "genome.max_neurons_per_node", g.max_neurons_per_node, "must be in 0..64");
   require(g.max_brain_neurons >= 0 && g.max_brain_neurons <= 256, "genome.max_brain_neurons",
@@ -163,8 +161,7 @@ void finishCreatureSettings(CreatureSettings& s) {
   const PhysicsSettings& p = s.physics;
   require(p.time_step > 0 && p.time_step <= 0.1, "physics.time_step", p.time_step,
           "must be in (0, 0.1] s");
-  require(p.gravity >= 0 && std::isfinite(p.gravity), "physics.gravity", p.gravity,
-          "must be >= 0");
+  require(p.gravity >= 0 && std::isfinite(p.gravity), "physics.gravity", p.gravity, "must be >= 0");
   require(p.ground_friction >= 0 && std::isfinite(p.ground_friction), "physics.ground_friction",
           p.ground_friction, "must be >= 0");
   require(p.restitution >= 0 && p.restitution <= 1, "physics.restitution", p.restitution,
@@ -179,8 +176,7 @@ void finishCreatureSettings(CreatureSettings& s) {
   require(p.max_displacement > 0, "physics.max_displacement", p.max_displacement, "must be > 0");
   require(p.penetration_tolerance >= 0, "physics.penetration_tolerance", p.penetration_tolerance,
           "must be >= 0");
-  require(p.max_wall_seconds >= 0, "physics.max_wall_seconds", p.max_wall_seconds,
-          "must be >= 0");
+  require(p.max_wall_seconds >= 0, "physics.max_wall_seconds", p.max_wall_seconds, "must be >= 0");
 
   // task
   const TaskSettings& t = s.task;
@@ -190,8 +186,7 @@ void finishCreatureSettings(CreatureSettings& s) {
   require(t.trial_time >= 0, "task.trial_time", t.trial_time, "must be >= 0");
   require(t.resettle_time >= 0, "task.resettle_time", t.resettle_time, "must be >= 0");
   require(t.chaumont_k > 0, "task.chaumont_k", t.chaumont_k, "must be > 0");
-  require(t.synthetic_cost_us >= 0, "task.synthetic_cost_us", t.synthetic_cost_us,
-          "must be >= 0");
+  require(t.synthetic_cost_us >= 0, "task.synthetic_cost_us", t.synthetic_cost_us, "must be >= 0");
   require(t.synthetic_cost_per_gene_us >= 0, "task.synthetic_cost_per_gene_us",
           t.synthetic_cost_per_gene_us, "must be >= 0");
   require(t.synthetic_noise >= 0 && t.synthetic_noise <= 1, "task.synthetic_noise",
@@ -211,7 +206,8 @@ po::variables_map parseOptions(int argc, const char* const* argv,
   try {
     po::command_line_parser parser(argc, argv);
     parser.options(all);
-    if (positional) parser.positional(*positional);
+    if (positional)
+      parser.positional(*positional);
     po::store(parser.run(), vm);
   } catch (const po::error& e) {
     throw Error(ExitCode::usage, e.what());
@@ -221,7 +217,8 @@ po::variables_map parseOptions(int argc, const char* const* argv,
   if (!config_key.empty() && vm.count(config_key)) {
     std::string path = vm[config_key].as<std::string>();
     std::ifstream file(path);
-    if (!file) throw ConfigError(path + ": cannot open the config file");
+    if (!file)
+      throw ConfigError(path + ": cannot open the config file");
     try {
       po::store(po::parse_config_file(file, settings, false), vm);
     } catch (const po::error& e) {
@@ -248,10 +245,11 @@ std::string optionsMarkdown(const po::options_description& desc) {
       // format_parameter() prints "arg (=default)"
       std::string parameter = option->format_parameter();
       auto at = parameter.find("(=");
-      if (at != std::string::npos) default_text = parameter.substr(at + 2, parameter.size() - at - 3);
+      if (at != std::string::npos)
+        default_text = parameter.substr(at + 2, parameter.size() - at - 3);
     }
-    out << "| `" << option->long_name() << "` | " << default_text << " | "
-        << option->description() << " |\n";
+    out << "| `" << option->long_name() << "` | " << default_text << " | " << option->description()
+        << " |\n";
   }
   return out.str();
 }

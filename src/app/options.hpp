@@ -3,13 +3,13 @@
 // ("--physics.time_step 0.004"); the command line wins.
 #pragma once
 
-#include <string>
-#include <vector>
+#include "cambrian/evaluate.hpp"
+#include "cambrian/genome.hpp"
 
 #include <boost/program_options.hpp>
 
-#include "cambrian/evaluate.hpp"
-#include "cambrian/genome.hpp"
+#include <string>
+#include <vector>
 
 namespace cambrian {
 

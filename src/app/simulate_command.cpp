@@ -1,12 +1,13 @@
 // cambrian simulate: evaluate one creature and print its outcome.
-#include <cstdio>
-#include <iostream>
-
 #include "cambrian/error.hpp"
 #include "cambrian/evaluate.hpp"
 #include "cambrian/genome.hpp"
+
 #include "commands.hpp"
 #include "options.hpp"
+
+#include <cstdio>
+#include <iostream>
 
 namespace cambrian {
 
@@ -16,25 +17,26 @@ int runSimulate(int argc, char** argv) {
   std::uint64_t seed = 1;
 
   // command-line-only options; settings come from creatureOptions()
-  po::options_description cli("cambrian simulate: evaluate one creature\n\n"
-                              "usage: cambrian simulate (--genome FILE | --random [--seed N]) "
-                              "[--task walk|jump|synthetic] [--config FILE] [settings]\n\n"
-                              "Options");
-  cli.add_options()
-    ("help,h", "show this help")
-    ("genome,g", po::value(&genome_path), "genome file (text or binary)")
-    ("random", "evaluate a random genome instead")
-    ("seed", po::value(&seed)->default_value(seed), "seed of the random genome and evaluation")
-    ("task", po::value(&task_name), "task: walk | jump | synthetic (same as --task.name)")
-    ("config,c", po::value(&config_path), "INI file with settings (command line wins)")
-    ("save", po::value(&save_path), "write the evaluated genome to this file (text form)");
+  po::options_description cli(
+      "cambrian simulate: evaluate one creature\n\n"
+      "usage: cambrian simulate (--genome FILE | --random [--seed N]) "
+      "[--task walk|jump|synthetic] [--config FILE] [settings]\n\n"
+      "Options");
+  cli.add_options()("help,h", "show this help")("genome,g", po::value(&genome_path),
+                                                "genome file (text or binary)")(
+      "random", "evaluate a random genome instead")("seed", po::value(&seed)->default_value(seed),
+                                                    "seed of the random genome and evaluation")(
+      "task", po::value(&task_name), "task: walk | jump | synthetic (same as --task.name)")(
+      "config,c", po::value(&config_path), "INI file with settings (command line wins)")(
+      "save", po::value(&save_path), "write the evaluated genome to this file (text form)");
   po::options_description creature = creatureOptions(settings);
   po::variables_map vm = parseOptions(argc, argv, cli, creature, nullptr);
   if (vm.count("help")) {
     std::cout << cli << "\n" << creature << "\n";
     return 0;
   }
-  if (!task_name.empty()) settings.task_name = task_name;
+  if (!task_name.empty())
+    settings.task_name = task_name;
   finishCreatureSettings(settings);
 
   // the creature
@@ -43,12 +45,13 @@ int runSimulate(int argc, char** argv) {
     throw Error(ExitCode::usage, "give exactly one of --genome FILE or --random");
   }
   Genome genome = random ? randomGenome(settings.limits, seed) : readGenomeFile(genome_path);
-  if (!save_path.empty()) writeGenomeFile(save_path, genome);
+  if (!save_path.empty())
+    writeGenomeFile(save_path, genome);
 
   // evaluate and report
   Outcome outcome = evaluate(genome, settings.limits, settings.task, settings.physics, seed);
-  std::printf("creature   %s\n", random ? ("random, seed " + std::to_string(seed)).c_str()
-                                        : genome_path.c_str());
+  std::printf("creature   %s\n",
+              random ? ("random, seed " + std::to_string(seed)).c_str() : genome_path.c_str());
   std::printf("body       %d parts, %d joints, %d neurons\n", outcome.parts, outcome.joints,
               outcome.neurons);
   std::printf("task       %s, %g s measured, step %g s\n", taskName(settings.task.kind),
@@ -56,7 +59,8 @@ int runSimulate(int argc, char** argv) {
   std::printf("status     %s%s%s\n", statusName(outcome.status),
               outcome.message.empty() ? "" : ": ", outcome.message.c_str());
   std::printf("fitness    %.17g\n", outcome.fitness);
-  for (const Measure& m : outcome.measures) std::printf("%-10s %.17g\n", m.name.c_str(), m.value);
+  for (const Measure& m : outcome.measures)
+    std::printf("%-10s %.17g\n", m.name.c_str(), m.value);
   std::printf("steps      %llu\n", static_cast<unsigned long long>(outcome.steps));
   std::printf("wall time  %.4f s (%.0f steps/s)\n", outcome.wall_seconds,
               outcome.wall_seconds > 0 ? outcome.steps / outcome.wall_seconds : 0.0);

@@ -44,9 +44,14 @@ Population Breeder::initialPopulation(const std::vector<Genome>& seeds) {
     individual.generation = 0;
     auto slot = static_cast<std::size_t>(i);
     if (seeds.empty()) {
-      // a random creature from the stream (seed, random_genome, 0, i)
+      // a random creature from the stream (seed, random_genome, 0, i); redraws use the
+      // streams (seed, random_genome, attempt, i)
       individual.origin = Origin::random;
-      individual.genome = randomGenome(limits_, settings_.seed, 0, slot);
+      for (int attempt = 0;; ++attempt) {
+        individual.genome = randomGenome(limits_, settings_.seed, attempt, slot);
+        if (acceptable(individual.genome, attempt))
+          break;
+      }
     } else if (slot < seeds.size()) {
       // the seed itself
       individual.origin = Origin::seed;
@@ -57,7 +62,11 @@ Population Breeder::initialPopulation(const std::vector<Genome>& seeds) {
       Rng rng(settings_.seed, RngPurpose::initial_population, 0, slot);
       individual.origin = Origin::mutation;
       individual.parents = {first_id + source};
-      individual.genome = tidy(mutate(seeds[source], limits_, settings_.mutation, rng));
+      for (int attempt = 0;; ++attempt) {
+        individual.genome = tidy(mutate(seeds[source], limits_, settings_.mutation, rng));
+        if (acceptable(individual.genome, attempt))
+          break;
+      }
     }
     population.individuals.push_back(std::move(individual));
   }
@@ -115,29 +124,30 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     Rng rng(settings_.seed, RngPurpose::variation, g, static_cast<std::uint64_t>(i));
     Individual child;
     child.generation = g;
-    if (i < plan_.mutations) {
-      // asexual: copy and mutate each parameter with mutation_rate
-      const Individual& parent = pickParent();
-      child.origin = Origin::mutation;
-      child.parents = {parent.id};
-      child.genome = mutate(parent.genome, limits_, settings_.mutation, rng);
-    } else {
-      // sexual: crossover or graft, then maybe a light mutation
-      const Individual& a = pickParent();
-      const Individual& b = pickParent();
-      child.parents = {a.id, b.id};
-      if (i < plan_.mutations + plan_.crossovers) {
-        child.origin = Origin::crossover;
-        child.genome = crossover(a.genome, b.genome, limits_, rng);
+    const Individual* a = &pickParent();
+    const Individual* b = i < plan_.mutations ? nullptr : &pickParent();
+    child.parents =
+        b ? std::vector<std::uint64_t>{a->id, b->id} : std::vector<std::uint64_t>{a->id};
+    child.origin = i < plan_.mutations                      ? Origin::mutation
+                   : i < plan_.mutations + plan_.crossovers ? Origin::crossover
+                                                            : Origin::graft;
+    for (int attempt = 0;; ++attempt) {
+      if (child.origin == Origin::mutation) {
+        // asexual: copy and mutate each parameter with mutation_rate
+        child.genome = mutate(a->genome, limits_, settings_.mutation, rng);
       } else {
-        child.origin = Origin::graft;
-        child.genome = graft(a.genome, b.genome, limits_, rng);
+        // sexual: crossover or graft, then maybe a light mutation
+        child.genome = child.origin == Origin::crossover
+                           ? crossover(a->genome, b->genome, limits_, rng)
+                           : graft(a->genome, b->genome, limits_, rng);
+        if (rng.bernoulli(settings_.post_crossover_mutation_chance)) {
+          child.genome = mutate(child.genome, limits_, post, rng);
+        }
       }
-      if (rng.bernoulli(settings_.post_crossover_mutation_chance)) {
-        child.genome = mutate(child.genome, limits_, post, rng);
-      }
+      child.genome = tidy(std::move(child.genome));
+      if (acceptable(child.genome, attempt))
+        break;
     }
-    child.genome = tidy(std::move(child.genome));
     child.id = next_id_++;
     next.individuals.push_back(std::move(child));
   }

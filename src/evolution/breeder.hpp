@@ -7,6 +7,7 @@
 #include "evolution/population.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace cambrian {
@@ -25,6 +26,9 @@ struct BreedingPlan {
 /// fractions (rounded; grafts take the remainder).
 BreedingPlan planBreeding(const EvolutionSettings& settings);
 
+/// Whether a new genome makes a body that may be born (Chaumont et al. 5.5).
+using ViabilityCheck = std::function<bool(const Genome&)>;
+
 /// Makes generations. Every random decision is keyed by (run seed, purpose) and counted by
 /// (generation, offspring slot), so a generation is a pure function of the previous one's genomes
 /// and fitnesses — never of rank count or arrival order. Ids are handed out in slot order.
@@ -41,6 +45,14 @@ class Breeder {
   /// Throws std::invalid_argument when `evaluated` is not fully evaluated.
   Population nextGeneration(const Population& evaluated);
 
+  /// New individuals that fail `check` are redrawn — same parents, the next draws of the same
+  /// random stream — up to `max_attempts` times in all (Chaumont et al. 5.5). Elites and seed
+  /// genomes are never redrawn. No check (the default) accepts everything.
+  void setViabilityCheck(ViabilityCheck check, int max_attempts = 50) {
+    viable_ = std::move(check);
+    max_attempts_ = max_attempts;
+  }
+
   /// The id the next new individual gets.
   std::uint64_t nextId() const { return next_id_; }
   /// Sets the id counter (resuming a run).
@@ -52,8 +64,13 @@ class Breeder {
   Genome tidy(Genome genome) const;
   EvolutionSettings settings_;
   GenomeLimits limits_;
+  bool acceptable(const Genome& genome, int attempt) const {
+    return !viable_ || attempt + 1 >= max_attempts_ || viable_(genome);
+  }
   BreedingPlan plan_;
   std::uint64_t next_id_ = 0;
+  ViabilityCheck viable_;
+  int max_attempts_ = 1;
 };
 
 }  // namespace cambrian

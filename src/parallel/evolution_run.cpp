@@ -72,6 +72,8 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
 
   // generation 0
   Breeder breeder(settings, limits);
+  if (run.viable)
+    breeder.setViabilityCheck(run.viable);
   Population population = breeder.initialPopulation(seeds);
 
   for (int g = 0; g < settings.generations; ++g) {

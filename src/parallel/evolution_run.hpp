@@ -4,6 +4,7 @@
 
 #include "cambrian/genome.hpp"
 
+#include "evolution/breeder.hpp"
 #include "evolution/evolution_settings.hpp"
 #include "evolution/run_record.hpp"
 #include "parallel/scheduler.hpp"
@@ -19,6 +20,7 @@ struct RunSettings {
   std::string out_dir = "cambrian-run";  ///< individuals.tsv and generations.tsv go here
   bool quiet = false;                    ///< no progress lines, only the digest
   bool verbose = false;                  ///< timing details after each progress line
+  ViabilityCheck viable;  ///< birth test for new individuals (none: accept all), rank 0 only
 };
 
 /// What a run produced.

@@ -1,9 +1,5 @@
 #include "physics/simulation.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <sstream>
-
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
@@ -11,14 +7,26 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
 namespace cambrian {
 
 namespace {
 
-btVector3 toBt(Vec3 v) { return btVector3(v.x, v.y, v.z); }
-Vec3 fromBt(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-btQuaternion toBt(Quat q) { return btQuaternion(q.x, q.y, q.z, q.w); }
-Quat fromBt(const btQuaternion& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+btVector3 toBt(Vec3 v) {
+  return btVector3(v.x, v.y, v.z);
+}
+Vec3 fromBt(const btVector3& v) {
+  return {v.x(), v.y(), v.z()};
+}
+btQuaternion toBt(Quat q) {
+  return btQuaternion(q.x, q.y, q.z, q.w);
+}
+Quat fromBt(const btQuaternion& q) {
+  return {q.w(), q.x(), q.y(), q.z()};
+}
 
 // a part's collider: collides with everything except its parent and children (the joint
 // neighbours), also across the virtual links of multi-degree-of-freedom joints
@@ -29,7 +37,8 @@ class PartCollider : public btMultiBodyLinkCollider {
 
   bool checkCollideWithOverride(const btCollisionObject* other_object) const override {
     const auto* other = dynamic_cast<const PartCollider*>(other_object);
-    if (!other || other->m_multiBody != m_multiBody) return true;
+    if (!other || other->m_multiBody != m_multiBody)
+      return true;
     return other->part_ != parent_part_ && other->parent_part_ != part_;
   }
 
@@ -61,9 +70,12 @@ struct BulletWorld {
   std::unique_ptr<btMultiBody> body;
 
   ~BulletWorld() {
-    for (auto& limit : limits) world.removeMultiBodyConstraint(limit.get());
-    for (auto& collider : colliders) world.removeCollisionObject(collider.get());
-    if (body) world.removeMultiBody(body.get());
+    for (auto& limit : limits)
+      world.removeMultiBodyConstraint(limit.get());
+    for (auto& collider : colliders)
+      world.removeCollisionObject(collider.get());
+    if (body)
+      world.removeMultiBody(body.get());
     world.removeCollisionObject(&ground);
   }
 };
@@ -72,13 +84,15 @@ Simulation::Simulation(const BodyPlan& plan, const PhysicsSettings& settings, Ve
                        double birth_height)
     : plan_(plan), settings_(settings), target_(target), brain_(plan, settings.time_step) {
   build(birth_height);
-  if (status_ == EvalStatus::ok) checkBirthPenetration();
+  if (status_ == EvalStatus::ok)
+    checkBirthPenetration();
 }
 
 Simulation::~Simulation() = default;
 
 void Simulation::fail(EvalStatus status, std::string message) {
-  if (status_ != EvalStatus::ok) return;
+  if (status_ != EvalStatus::ok)
+    return;
   status_ = status;
   message_ = std::move(message);
 }
@@ -117,7 +131,8 @@ void Simulation::build(double birth_height) {
       Vec3 local{(corner & 1) ? half.x : -half.x, (corner & 2) ? half.y : -half.y,
                  (corner & 4) ? half.z : -half.z};
       double z = apply(part.pose, local).z;
-      if (first || z < lowest) lowest = z;
+      if (first || z < lowest)
+        lowest = z;
       first = false;
     }
   }
@@ -164,13 +179,12 @@ void Simulation::build(double birth_height) {
     for (int d = 0; d < dofs; ++d) {
       bool last = d == dofs - 1;
       int link = next_link++;
-      body.setupRevolute(link, last ? part.mass : virtual_mass,
-                         last ? inertia : btVector3(virtual_inertia, virtual_inertia,
-                                                    virtual_inertia),
-                         d == 0 ? parent_link : link - 1,
-                         d == 0 ? parent_to_this : btQuaternion::getIdentity(),
-                         toBt(part.axes[d]), d == 0 ? parent_offset : btVector3(0, 0, 0),
-                         last ? com_offset : btVector3(0, 0, 0), true);
+      body.setupRevolute(
+          link, last ? part.mass : virtual_mass,
+          last ? inertia : btVector3(virtual_inertia, virtual_inertia, virtual_inertia),
+          d == 0 ? parent_link : link - 1, d == 0 ? parent_to_this : btQuaternion::getIdentity(),
+          toBt(part.axes[d]), d == 0 ? parent_offset : btVector3(0, 0, 0),
+          last ? com_offset : btVector3(0, 0, 0), true);
       dof_link_[i][d] = link;
       damped_links_.push_back(link);
     }
@@ -202,10 +216,11 @@ void Simulation::build(double birth_height) {
   for (int i = 1; i < part_count; ++i) {
     for (int d = 0; d < 3; ++d) {
       int link = dof_link_[i][d];
-      if (link < 0) continue;
+      if (link < 0)
+        continue;
       double limit = plan_.parts[i].joint_limit[d];
-      b.limits.push_back(std::make_unique<btMultiBodyJointLimitConstraint>(&body, link, -limit,
-                                                                           limit));
+      b.limits.push_back(
+          std::make_unique<btMultiBodyJointLimitConstraint>(&body, link, -limit, limit));
       b.world.addMultiBodyConstraint(b.limits.back().get());
     }
   }
@@ -234,7 +249,8 @@ void Simulation::checkBirthPenetration() {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     int part_a = manifold->getBody0()->getUserIndex();
     int part_b = manifold->getBody1()->getUserIndex();
-    if (part_a < 0 || part_b < 0) continue;  // the ground
+    if (part_a < 0 || part_b < 0)
+      continue;  // the ground
     for (int c = 0; c < manifold->getNumContacts(); ++c) {
       double depth = manifold->getContactPoint(c).getDistance();
       if (depth < -settings_.penetration_tolerance) {
@@ -261,18 +277,22 @@ void Simulation::readSensors() {
     for (int c = 0; c < manifold->getNumContacts() && !touching; ++c) {
       touching = manifold->getContactPoint(c).getDistance() <= 0.001;
     }
-    if (!touching) continue;
+    if (!touching)
+      continue;
     int part_a = manifold->getBody0()->getUserIndex();
     int part_b = manifold->getBody1()->getUserIndex();
-    if (part_a >= 0) contact_[part_a] = 1;
-    if (part_b >= 0) contact_[part_b] = 1;
+    if (part_a >= 0)
+      contact_[part_a] = 1;
+    if (part_b >= 0)
+      contact_[part_b] = 1;
   }
 
   // photosensor direction in the root frame
   const btTransform& root = b.colliders[0]->getWorldTransform();
   btVector3 to_target = root.getBasis().transpose() * (toBt(target_) - root.getOrigin());
   double distance = to_target.length();
-  if (distance > 1e-9) to_target /= distance;
+  if (distance > 1e-9)
+    to_target /= distance;
 
   // write every sensor slot
   std::span<double> sensors = brain_.sensors();
@@ -302,14 +322,16 @@ void Simulation::applyTorques(bool brain_on) {
   for (int link : damped_links_) {
     body.addJointTorque(link, -settings_.joint_damping * body.getJointVel(link));
   }
-  if (!brain_on) return;
+  if (!brain_on)
+    return;
 
   // effector commands scaled by each joint's strength
   std::span<const double> commands = brain_.effectors();
   for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
     const EffectorPlan& effector = plan_.effectors[e];
     int link = dof_link_[effector.part][effector.dof];
-    if (link < 0) continue;
+    if (link < 0)
+      continue;
     body.addJointTorque(link, commands[e] * max_torque_[effector.part]);
   }
 }
@@ -349,11 +371,13 @@ void Simulation::monitor() {
 }
 
 void Simulation::step(bool brain_on) {
-  if (status_ != EvalStatus::ok) return;
+  if (status_ != EvalStatus::ok)
+    return;
 
   // sense, think, act
   readSensors();
-  if (brain_on) brain_.step();
+  if (brain_on)
+    brain_.step();
   applyTorques(brain_on);
 
   // one fixed step (maxSubSteps = 0: exactly one internal step of time_step)
@@ -383,7 +407,8 @@ double Simulation::lowestPoint() const {
     double reach = std::abs(basis[2][0]) * half.x + std::abs(basis[2][1]) * half.y +
                    std::abs(basis[2][2]) * half.z;
     double z = transform.getOrigin().z() - reach;
-    if (i == 0 || z < lowest) lowest = z;
+    if (i == 0 || z < lowest)
+      lowest = z;
   }
   return lowest;
 }

@@ -1,17 +1,18 @@
 // cambrian: one creature in a fresh Bullet world — build, sense, act, step, watch.
 #pragma once
 
+#include "cambrian/body_plan.hpp"
+#include "cambrian/evaluate.hpp"
+#include "cambrian/math.hpp"
+#include "cambrian/outcome.hpp"
+
+#include "brain/brain.hpp"
+
 #include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include "brain/brain.hpp"
-#include "cambrian/body_plan.hpp"
-#include "cambrian/evaluate.hpp"
-#include "cambrian/math.hpp"
-#include "cambrian/outcome.hpp"
 
 namespace cambrian {
 

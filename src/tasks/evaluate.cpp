@@ -1,13 +1,14 @@
 #include "cambrian/evaluate.hpp"
 
-#include <chrono>
-#include <cmath>
-#include <exception>
-
 #include "cambrian/error.hpp"
+
 #include "physics/simulation.hpp"
 #include "tasks/juries.hpp"
 #include "tasks/synthetic.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
 
 namespace cambrian {
 
@@ -25,10 +26,13 @@ bool runPhase(Simulation& simulation, std::uint64_t steps, bool brain_on, Jury* 
               Clock::time_point deadline, bool bounded) {
   for (std::uint64_t s = 0; s < steps; ++s) {
     simulation.step(brain_on);
-    if (simulation.status() != EvalStatus::ok) return false;
-    if (jury) jury->observe(simulation);
+    if (simulation.status() != EvalStatus::ok)
+      return false;
+    if (jury)
+      jury->observe(simulation);
     // wall-clock bound, looked at every 256 steps
-    if (bounded && (simulation.steps() & 255) == 0 && Clock::now() > deadline) return false;
+    if (bounded && (simulation.steps() & 255) == 0 && Clock::now() > deadline)
+      return false;
   }
   return true;
 }
@@ -42,8 +46,8 @@ Outcome failure(EvalStatus status, const std::string& message) {
   return outcome;
 }
 
-Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task,
-                     const PhysicsSettings& physics, Clock::time_point start) {
+Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task, const PhysicsSettings& physics,
+                     Clock::time_point start) {
   Outcome outcome;
   outcome.parts = static_cast<int>(plan.parts.size());
   outcome.joints = plan.jointCount();
@@ -67,19 +71,21 @@ Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task,
     }
     return result;
   };
-  if (simulation.status() != EvalStatus::ok) return finish(outcome);
+  if (simulation.status() != EvalStatus::ok)
+    return finish(outcome);
 
   // Chaumont's start-up: settle brain off, trial brain on, settle again (walk);
   // jump: settle only
   const double dt = physics.time_step;
-  bool alive = runPhase(simulation, stepsIn(task.settle_time, dt), false, nullptr, deadline,
-                        bounded);
+  bool alive =
+      runPhase(simulation, stepsIn(task.settle_time, dt), false, nullptr, deadline, bounded);
   if (alive && task.kind == TaskKind::walk) {
-    alive = runPhase(simulation, stepsIn(task.trial_time, dt), true, nullptr, deadline, bounded) &&
-            runPhase(simulation, stepsIn(task.resettle_time, dt), false, nullptr, deadline,
-                     bounded);
+    alive =
+        runPhase(simulation, stepsIn(task.trial_time, dt), true, nullptr, deadline, bounded) &&
+        runPhase(simulation, stepsIn(task.resettle_time, dt), false, nullptr, deadline, bounded);
   }
-  if (!alive) return finish(outcome);
+  if (!alive)
+    return finish(outcome);
 
   // measured phase, brain on
   DistanceJury distance;
@@ -87,7 +93,8 @@ Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task,
   Jury* jury = task.kind == TaskKind::walk ? static_cast<Jury*>(&distance) : &height;
   jury->begin(simulation);
   alive = runPhase(simulation, stepsIn(task.evaluation_time, dt), true, jury, deadline, bounded);
-  if (!alive) return finish(outcome);
+  if (!alive)
+    return finish(outcome);
 
   // combine the juries into a fitness
   if (task.kind == TaskKind::walk) {
@@ -111,7 +118,8 @@ Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task,
     outcome.measures.push_back({"height", height.value(simulation)});
     outcome.fitness = height.value(simulation);
   }
-  if (!std::isfinite(outcome.fitness) || outcome.fitness < 0) outcome.fitness = kWorstFitness;
+  if (!std::isfinite(outcome.fitness) || outcome.fitness < 0)
+    outcome.fitness = kWorstFitness;
   return finish(outcome);
 }
 
@@ -135,17 +143,20 @@ bool isViable(const Genome& genome, const GenomeLimits& limits, const PhysicsSet
     validateGenome(genome, limits);
     BodyPlan plan = develop(genome, limits);
     if (plan.parts.empty()) {
-      if (reason) *reason = "no parts";
+      if (reason)
+        *reason = "no parts";
       return false;
     }
     Simulation simulation(plan, physics);
     if (simulation.status() != EvalStatus::ok) {
-      if (reason) *reason = std::string(statusName(simulation.status())) + ": " + simulation.message();
+      if (reason)
+        *reason = std::string(statusName(simulation.status())) + ": " + simulation.message();
       return false;
     }
     return true;
   } catch (const std::exception& e) {
-    if (reason) *reason = e.what();
+    if (reason)
+      *reason = e.what();
     return false;
   }
 }

@@ -5,14 +5,18 @@
 
 namespace cambrian {
 
-void DistanceJury::begin(const Simulation& simulation) { start_ = simulation.centerOfMass(); }
+void DistanceJury::begin(const Simulation& simulation) {
+  start_ = simulation.centerOfMass();
+}
 
 double DistanceJury::value(const Simulation& simulation) const {
   Vec3 moved = simulation.centerOfMass() - start_;
   return std::sqrt(moved.x * moved.x + moved.y * moved.y);
 }
 
-void HeightJury::begin(const Simulation& simulation) { best_ = simulation.lowestPoint(); }
+void HeightJury::begin(const Simulation& simulation) {
+  best_ = simulation.lowestPoint();
+}
 
 void HeightJury::observe(const Simulation& simulation) {
   best_ = std::max(best_, simulation.lowestPoint());
@@ -28,7 +32,8 @@ double chaumontFactor(const BodyPlan& plan, double k) {
     volumes += b.x * b.y * b.z;
   }
   double n = static_cast<double>(plan.parts.size());
-  if (n == 0) return 0;
+  if (n == 0)
+    return 0;
   double c_l = lengths / n, c_s = surfaces / n, c_v = volumes / n;
   return c_v / (c_s * c_l) * std::pow(k, n);
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "cambrian/body_plan.hpp"
+
 #include "physics/simulation.hpp"
 
 namespace cambrian {

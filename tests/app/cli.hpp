@@ -1,11 +1,10 @@
 // test helper: run the cambrian executable and capture what it prints and returns
 #pragma once
 
-#include <sys/wait.h>
-
 #include <array>
 #include <cstdio>
 #include <string>
+#include <sys/wait.h>
 
 namespace cambrian::test {
 
@@ -20,7 +19,8 @@ inline CommandResult runCambrian(const std::string& arguments) {
       std::string(CAMBRIAN_BINARY_DIR) + "/src/app/cambrian " + arguments + " 2>&1";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
+  if (!pipe)
+    return result;
   std::array<char, 4096> buffer;
   std::size_t n;
   while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
@@ -34,9 +34,12 @@ inline CommandResult runCambrian(const std::string& arguments) {
 /// The line of `output` that starts with `key`, or "".
 inline std::string lineStartingWith(const std::string& output, const std::string& key) {
   std::size_t at = output.find("\n" + key);
-  if (output.compare(0, key.size(), key) == 0) at = 0;
-  else if (at == std::string::npos) return "";
-  else at += 1;
+  if (output.compare(0, key.size(), key) == 0)
+    at = 0;
+  else if (at == std::string::npos)
+    return "";
+  else
+    at += 1;
   return output.substr(at, output.find('\n', at) - at);
 }
 

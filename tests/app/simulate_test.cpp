@@ -1,10 +1,11 @@
 // tests of `cambrian simulate` and `cambrian inspect` through the executable
-#include <fstream>
+#include "cambrian/error.hpp"
+
+#include "app/cli.hpp"
 
 #include <gtest/gtest.h>
 
-#include "app/cli.hpp"
-#include "cambrian/error.hpp"
+#include <fstream>
 
 namespace cambrian {
 namespace {
@@ -15,7 +16,9 @@ using test::runCambrian;
 const std::string kCreatures = std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/";
 const std::string kShort = " --task.evaluation_time 2";
 
-int code(ExitCode c) { return static_cast<int>(c); }
+int code(ExitCode c) {
+  return static_cast<int>(c);
+}
 
 // a hand-written creature is evaluated and its outcome printed
 TEST(SimulateCommand, PrintsOutcome) {
@@ -29,9 +32,9 @@ TEST(SimulateCommand, PrintsOutcome) {
 
 // two separate processes give bit-identical outcomes (fitness printed with 17 digits)
 TEST(SimulateCommand, DeterministicAcrossProcesses) {
-  for (const std::string& creature : {"--genome " + kCreatures + "walker4.genome",
-                                      std::string("--random --seed 11"),
-                                      std::string("--random --seed 12")}) {
+  for (const std::string& creature :
+       {"--genome " + kCreatures + "walker4.genome", std::string("--random --seed 11"),
+        std::string("--random --seed 12")}) {
     auto a = runCambrian("simulate " + creature + kShort);
     auto b = runCambrian("simulate " + creature + kShort);
     ASSERT_EQ(a.exit_code, 0) << a.output;

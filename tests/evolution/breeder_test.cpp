@@ -132,6 +132,45 @@ TEST(Breeder, BestFitnessNeverDrops) {
   }
 }
 
+// new individuals that fail the birth test are redrawn; the redraws are deterministic
+TEST(Breeder, ViabilityCheckRedrawsNewIndividuals) {
+  // an arbitrary test half of all genomes pass: even byte sum of the serialized form
+  auto small = [](const Genome& genome) {
+    unsigned sum = 0;
+    for (std::uint8_t byte : serializeGenome(genome))
+      sum += byte;
+    return sum % 2 == 0;
+  };
+  Breeder first(smallRun(), GenomeLimits{}), second(smallRun(), GenomeLimits{});
+  first.setViabilityCheck(small);
+  second.setViabilityCheck(small);
+  Population a = first.initialPopulation(), b = second.initialPopulation();
+  for (int g = 0; g < 3; ++g) {
+    for (const Individual& individual : a.individuals) {
+      if (individual.origin != Origin::elite) {
+        EXPECT_TRUE(small(individual.genome));
+      }
+    }
+    fill(a, indices(a.individuals.size(), false));
+    fill(b, indices(b.individuals.size(), false));
+    a = first.nextGeneration(a);
+    b = second.nextGeneration(b);
+    for (std::size_t i = 0; i < a.individuals.size(); ++i) {
+      EXPECT_EQ(a.individuals[i].genome, b.individuals[i].genome);
+    }
+  }
+}
+
+// a check nothing passes still ends: the last attempt is kept
+TEST(Breeder, ImpossibleViabilityCheckStillBreeds) {
+  Breeder breeder(smallRun(), GenomeLimits{});
+  breeder.setViabilityCheck([](const Genome&) { return false; }, 3);
+  Population p = breeder.initialPopulation();
+  EXPECT_EQ(p.individuals.size(), 20u);
+  fill(p, indices(p.individuals.size(), false));
+  EXPECT_EQ(breeder.nextGeneration(p).individuals.size(), 20u);
+}
+
 TEST(Breeder, GenerationsDoNotDependOnTheOrderOutcomesArrive) {
   Breeder forward(smallRun(), GenomeLimits{}), backward(smallRun(), GenomeLimits{});
   Population a = forward.initialPopulation(), b = backward.initialPopulation();

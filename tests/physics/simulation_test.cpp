@@ -1,8 +1,8 @@
 #include "physics/simulation.hpp"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace cambrian {
 namespace {
@@ -59,10 +59,12 @@ TEST(Simulation, DroppedBlockComesToRest) {
   Simulation simulation(plan, settings, {10, 0, 0}, 0.5);
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
   EXPECT_NEAR(simulation.lowestPoint(), 0.5, 1e-9);
-  for (int s = 0; s < 480; ++s) simulation.step(false);
+  for (int s = 0; s < 480; ++s)
+    simulation.step(false);
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
   Vec3 before = simulation.centerOfMass();
-  for (int s = 0; s < 240; ++s) simulation.step(false);
+  for (int s = 0; s < 240; ++s)
+    simulation.step(false);
   Vec3 after = simulation.centerOfMass();
   EXPECT_NEAR(simulation.lowestPoint(), 0.0, 2e-3);
   EXPECT_NEAR(after.z, 0.1, 2e-3);
@@ -95,7 +97,8 @@ TEST(Simulation, EffectorMovesJoint) {
   BodyPlan plan = hinged(1.0);
   PhysicsSettings settings;
   Simulation simulation(plan, settings);
-  for (int s = 0; s < 240; ++s) simulation.step(true);
+  for (int s = 0; s < 240; ++s)
+    simulation.step(true);
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
   EXPECT_GT(std::abs(simulation.brain().signals()[0]), 0.05);
 }
@@ -106,7 +109,8 @@ TEST(Simulation, ExplosionIsCaught) {
   PhysicsSettings settings;
   settings.strength_per_area = 1e12;
   Simulation simulation(plan, settings);
-  for (int s = 0; s < 2400 && simulation.status() == EvalStatus::ok; ++s) simulation.step(true);
+  for (int s = 0; s < 2400 && simulation.status() == EvalStatus::ok; ++s)
+    simulation.step(true);
   EXPECT_TRUE(simulation.status() == EvalStatus::exploded ||
               simulation.status() == EvalStatus::non_finite)
       << statusName(simulation.status());
@@ -118,7 +122,8 @@ TEST(Simulation, Deterministic) {
   std::vector<Transform> first, second;
   for (auto* poses : {&first, &second}) {
     Simulation simulation(plan, PhysicsSettings{});
-    for (int s = 0; s < 500; ++s) simulation.step(true);
+    for (int s = 0; s < 500; ++s)
+      simulation.step(true);
     simulation.partPoses(*poses);
   }
   ASSERT_EQ(first.size(), second.size());

@@ -1,9 +1,9 @@
 #include "cambrian/evaluate.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstring>
-
-#include <gtest/gtest.h>
 
 namespace cambrian {
 namespace {
@@ -19,12 +19,16 @@ TaskSettings shortWalk() {
 
 // every effector and joint controller switched off
 Genome withoutEffectors(Genome genome) {
-  for (PartGene& node : genome.nodes) node.effectors.clear();
-  for (ConnectionGene& connection : genome.connections) connection.controller.enabled = false;
+  for (PartGene& node : genome.nodes)
+    node.effectors.clear();
+  for (ConnectionGene& connection : genome.connections)
+    connection.controller.enabled = false;
   return genome;
 }
 
-bool bitIdentical(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool bitIdentical(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 // the hand-written walker walks: a positive distance with status ok
 TEST(Evaluate, WalkerMoves) {
@@ -54,7 +58,8 @@ TEST(Evaluate, PassiveRandomCreaturesStayPut) {
   int evaluated = 0;
   for (std::uint64_t seed = 1; seed <= 200 && evaluated < 10; ++seed) {
     Genome passive = withoutEffectors(randomGenome(limits, seed));
-    if (!isViable(passive, limits, PhysicsSettings{})) continue;
+    if (!isViable(passive, limits, PhysicsSettings{}))
+      continue;
     Outcome outcome = evaluate(passive, limits, shortWalk(), PhysicsSettings{});
     ASSERT_EQ(outcome.status, EvalStatus::ok) << "seed " << seed << ": " << outcome.message;
     ++evaluated;

@@ -1,8 +1,8 @@
 #include "tasks/juries.hpp"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace cambrian {
 namespace {
