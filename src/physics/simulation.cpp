@@ -173,7 +173,7 @@ void Simulation::build(double birth_height) {
     }
 
     // a chain of revolute links: virtual ones at the pivot, the real box last
-    double virtual_mass = 0.01 * part.mass;
+    double virtual_mass = 0.2 * part.mass;
     double radius = 0.5 * std::min({part.size.x, part.size.y, part.size.z});
     double virtual_inertia = 0.4 * virtual_mass * radius * radius;
     for (int d = 0; d < dofs; ++d) {

@@ -93,9 +93,10 @@ TEST(GenomeFile, CreatureFiles) {
 
   Genome walker = readGenomeFile(folder + "walker4.genome");
   validateGenome(walker, GenomeLimits{});
-  ASSERT_EQ(walker.nodes.size(), 2u);
-  ASSERT_EQ(walker.connections.size(), 1u);
-  EXPECT_EQ(walker.connections[0].reflection, 3);  // x | y: four legs
+  ASSERT_EQ(walker.nodes.size(), 3u);
+  ASSERT_EQ(walker.connections.size(), 2u);
+  EXPECT_EQ(walker.connections[0].reflection, 2);  // y: a left/right pair
+  EXPECT_EQ(walker.connections[1].reflection, 2);
   EXPECT_EQ(walker.nodes[1].effectors.size(),
             static_cast<std::size_t>(degreesOfFreedom(walker.nodes[1].joint_type)));
 

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Where an evaluation's instructions go: callgrind on a 10 s walk of a 5-part creature and of
+# a few random creatures, summed by shared object (analysis/callgrind_share.py).
+# Usage: bash jobs/bench/bullet_share.sh [path/to/cambrian]   (default: build/release)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+cambrian=${1:-build/release/src/app/cambrian}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+profile() {
+  local name=$1; shift
+  valgrind --tool=callgrind --callgrind-out-file="$work/$name.out" "$cambrian" simulate "$@" \
+    > "$work/$name.txt" 2> /dev/null
+  echo "== $name: $(grep -E '^(body|status|steps)' "$work/$name.txt" | tr -s ' ' | paste -sd ';')"
+  /usr/bin/python3 analysis/callgrind_share.py "$work/$name.out"
+}
+
+profile walker4 --genome jobs/creatures/walker4.genome --task walk
+profile snake --genome jobs/creatures/snake.genome --task walk
