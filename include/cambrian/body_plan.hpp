@@ -2,12 +2,12 @@
 // encodings and physics. No Bullet here.
 #pragma once
 
+#include "cambrian/genome.hpp"
+#include "cambrian/math.hpp"
+
 #include <array>
 #include <cstdint>
 #include <vector>
-
-#include "cambrian/genome.hpp"
-#include "cambrian/math.hpp"
 
 namespace cambrian {
 
@@ -21,22 +21,22 @@ struct Wire {
 
 /// One part instance and the joint that ties it to its parent.
 struct PartPlan {
-  int node = 0;         ///< genome node it is an instance of
-  int parent = -1;      ///< index of the parent part, -1 for the root
-  int connection = -1;  ///< genome connection that made it, -1 for the root
-  int depth = 0;        ///< root = 0
-  Vec3 size;            ///< full box size, metres
-  double mass = 0;      ///< kg
-  Transform pose;       ///< pose at birth in the creature frame (root at the origin)
+  int node = 0;                        ///< genome node it is an instance of
+  int parent = -1;                     ///< index of the parent part, -1 for the root
+  int connection = -1;                 ///< genome connection that made it, -1 for the root
+  int depth = 0;                       ///< root = 0
+  Vec3 size;                           ///< full box size, metres
+  double mass = 0;                     ///< kg
+  Transform pose;                      ///< pose at birth in the creature frame (root at the origin)
   JointType joint = JointType::rigid;  ///< to the parent
   Vec3 pivot_in_parent;                ///< joint point in the parent's frame
   Vec3 pivot_in_child;                 ///< joint point in this part's frame
-  Quat parent_to_child;  ///< this part's frame relative to the parent's frame
+  Quat parent_to_child;                ///< this part's frame relative to the parent's frame
   std::array<Vec3, 3> axes{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  ///< in this part's frame
-  Vec3 joint_limit;   ///< symmetric limit per degree of freedom, radians
+  Vec3 joint_limit;          ///< symmetric limit per degree of freedom, radians
   double cross_section = 0;  ///< m^2, smaller of the two faces meeting at the joint; physics
                              ///< turns it into the joint's maximum torque
-  bool reflected = false;  ///< made through a reflected connection
+  bool reflected = false;    ///< made through a reflected connection
 };
 
 /// What a sensor reads. Values are written by physics into the signal array each step.

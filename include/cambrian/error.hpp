@@ -9,15 +9,15 @@ namespace cambrian {
 /// Process exit codes, documented in docs/exit-codes.md. Stable: scripts depend on them.
 enum class ExitCode : int {
   ok = 0,
-  failure = 1,          ///< an unexpected internal error
-  usage = 2,            ///< unknown option, missing argument, bad command line
-  config = 3,           ///< an experiment/config file or option value is invalid
-  input_file = 4,       ///< a genome, history or checkpoint file is missing, malformed or foreign
-  output_file = 5,      ///< an output file could not be written
-  checkpoint = 6,       ///< a checkpoint does not match the experiment it is resumed with
-  mpi = 7,              ///< wrong rank count or an MPI-level failure (rank named in the message)
-  worker_failure = 8,   ///< a worker rank hit an unrecoverable error
-  interrupted = 9,      ///< stopped by a signal before a clean checkpoint could be written
+  failure = 1,         ///< an unexpected internal error
+  usage = 2,           ///< unknown option, missing argument, bad command line
+  config = 3,          ///< an experiment/config file or option value is invalid
+  input_file = 4,      ///< a genome, history or checkpoint file is missing, malformed or foreign
+  output_file = 5,     ///< an output file could not be written
+  checkpoint = 6,      ///< a checkpoint does not match the experiment it is resumed with
+  mpi = 7,             ///< wrong rank count or an MPI-level failure (rank named in the message)
+  worker_failure = 8,  ///< a worker rank hit an unrecoverable error
+  interrupted = 9,     ///< stopped by a signal before a clean checkpoint could be written
 };
 
 /// Base of all cambrian errors: a message for people and the exit code for the process.

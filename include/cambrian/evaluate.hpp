@@ -1,12 +1,12 @@
 // cambrian: evaluating one creature — a pure function of (genome, settings, seed).
 #pragma once
 
-#include <cstdint>
-#include <string>
-
 #include "cambrian/body_plan.hpp"
 #include "cambrian/genome.hpp"
 #include "cambrian/outcome.hpp"
+
+#include <cstdint>
+#include <string>
 
 namespace cambrian {
 
@@ -16,22 +16,23 @@ struct PhysicsSettings {
   double gravity = 9.81;           ///< m / s^2, pointing down (-z)
   double ground_friction = 1.0;    ///< Coulomb coefficient
   double restitution = 0.0;
-  double joint_damping = 0.05;     ///< N m s / rad, passive damping on every joint
-  double strength_per_area = 2000; ///< N m of torque per m^2 of the smaller cross-section
+  double joint_damping = 0.05;      ///< N m s / rad, passive damping on every joint
+  double strength_per_area = 2000;  ///< N m of torque per m^2 of the smaller cross-section
   int solver_iterations = 20;
-  double max_speed = 50;           ///< m / s: any part faster has exploded
-  double max_displacement = 100;   ///< m: any part farther from its start has exploded
-  double penetration_tolerance = 0.002;  ///< m of overlap allowed between non-adjacent parts at birth
-  double max_wall_seconds = 60;    ///< wall-clock bound of one evaluation (0 = none)
+  double max_speed = 50;          ///< m / s: any part faster has exploded
+  double max_displacement = 100;  ///< m: any part farther from its start has exploded
+  double penetration_tolerance =
+      0.002;                     ///< m of overlap allowed between non-adjacent parts at birth
+  double max_wall_seconds = 60;  ///< wall-clock bound of one evaluation (0 = none)
 };
 
 /// What is asked of the creature and how it is measured.
 enum class TaskKind : std::uint8_t { walk, jump, synthetic };
 /// Walk fitness normalisations from the seeds.
 enum class WalkNormalisation : std::uint8_t {
-  none,       ///< raw distance, metres
-  chaumont,   ///< D * C_v / (C_s * C_l) * k^N (Chaumont et al. eq. 1)
-  volume,     ///< D / cbrt(total volume) (Minemonics)
+  none,      ///< raw distance, metres
+  chaumont,  ///< D * C_v / (C_s * C_l) * k^N (Chaumont et al. eq. 1)
+  volume,    ///< D / cbrt(total volume) (Minemonics)
 };
 
 struct TaskSettings {
@@ -41,12 +42,12 @@ struct TaskSettings {
   double trial_time = 1.0;      ///< s, brain on, not measured (Chaumont)
   double resettle_time = 0.5;   ///< s, brain off again before measuring
   WalkNormalisation normalisation = WalkNormalisation::none;
-  double chaumont_k = 1.02;     ///< k in k^N
-  Vec3 target{10, 0, 0};        ///< photosensor target, metres
+  double chaumont_k = 1.02;  ///< k in k^N
+  Vec3 target{10, 0, 0};     ///< photosensor target, metres
   // synthetic task (framework overhead studies)
-  double synthetic_cost_us = 10000;  ///< busy work per evaluation, microseconds
+  double synthetic_cost_us = 10000;       ///< busy work per evaluation, microseconds
   double synthetic_cost_per_gene_us = 0;  ///< extra per genome node
-  double synthetic_noise = 0;        ///< relative spread of the cost, deterministic per creature
+  double synthetic_noise = 0;  ///< relative spread of the cost, deterministic per creature
 };
 
 const char* taskName(TaskKind kind);

@@ -4,11 +4,11 @@
 // (develop/) walks the graph from the root node to make a BodyPlan. See docs/genome.md.
 #pragma once
 
+#include "cambrian/math.hpp"
+
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include "cambrian/math.hpp"
 
 namespace cambrian {
 
@@ -18,7 +18,9 @@ namespace cambrian {
 enum class JointType : std::uint8_t { rigid = 0, revolute = 1, universal = 2, spherical = 3 };
 
 /// Degrees of freedom of a joint type: 0, 1, 2 or 3.
-inline int degreesOfFreedom(JointType type) { return static_cast<int>(type); }
+inline int degreesOfFreedom(JointType type) {
+  return static_cast<int>(type);
+}
 
 /// Part shapes. Boxes only for now; the enum keeps the format open.
 enum class PartShape : std::uint8_t { box = 0 };
@@ -89,7 +91,8 @@ struct NeuronGene {
   friend bool operator==(const NeuronGene&, const NeuronGene&) = default;
 };
 
-/// Drives one degree of freedom of the joint to the parent: torque = strength * clamp(input, -1, 1).
+/// Drives one degree of freedom of the joint to the parent: torque = strength * clamp(input, -1,
+/// 1).
 struct EffectorGene {
   NeuronInput input;
   friend bool operator==(const EffectorGene&, const EffectorGene&) = default;
@@ -108,12 +111,12 @@ struct JointControllerGene {
 /// A class of body parts (a graph node).
 struct PartGene {
   PartShape shape = PartShape::box;
-  Vec3 dimensions{0.2, 0.2, 0.2};  ///< full box size, metres
-  double density = 1000;           ///< kg / m^3
+  Vec3 dimensions{0.2, 0.2, 0.2};              ///< full box size, metres
+  double density = 1000;                       ///< kg / m^3
   JointType joint_type = JointType::revolute;  ///< joint to the parent (ignored at the root)
-  Vec3 joint_limit{1, 1, 1};  ///< symmetric limit per degree of freedom, radians (0..pi)
-  std::uint8_t recursive_limit = 1;  ///< how many times this node may repeat along a path (>= 1)
-  std::vector<NeuronGene> neurons;     ///< local neurons, copied into every instance
+  Vec3 joint_limit{1, 1, 1};            ///< symmetric limit per degree of freedom, radians (0..pi)
+  std::uint8_t recursive_limit = 1;     ///< how many times this node may repeat along a path (>= 1)
+  std::vector<NeuronGene> neurons;      ///< local neurons, copied into every instance
   std::vector<EffectorGene> effectors;  ///< one per degree of freedom; extra ones are ignored
   friend bool operator==(const PartGene&, const PartGene&) = default;
 };
@@ -122,9 +125,9 @@ struct PartGene {
 struct ConnectionGene {
   std::uint16_t from = 0;
   std::uint16_t to = 0;
-  Vec3 position{1, 0, 0};     ///< attachment on the parent, each in [-1, 1], projected on its surface
-  Vec3 orientation{0, 0, 0};  ///< Euler angles (roll, pitch, yaw) of the child, radians
-  double scale = 1;           ///< child size multiplier, compounding along the path
+  Vec3 position{1, 0, 0};  ///< attachment on the parent, each in [-1, 1], projected on its surface
+  Vec3 orientation{0, 0, 0};    ///< Euler angles (roll, pitch, yaw) of the child, radians
+  double scale = 1;             ///< child size multiplier, compounding along the path
   std::uint8_t reflection = 0;  ///< bit 0: mirror x, bit 1: mirror y, bit 2: mirror z
   bool terminal_only = false;   ///< only applied when the recursive limit of `from` is reached
   JointControllerGene controller;
@@ -141,24 +144,25 @@ struct Genome {
 
 /// Limits that keep creatures finite. Defaults follow Chaumont et al. and Sims.
 struct GenomeLimits {
-  int max_nodes = 20;             ///< genes (graph nodes)
-  int max_connections = 40;       ///< connections in the graph
-  int max_parts = 30;             ///< part instances after development
-  int max_recursive_limit = 8;    ///< per node
+  int max_nodes = 20;           ///< genes (graph nodes)
+  int max_connections = 40;     ///< connections in the graph
+  int max_parts = 30;           ///< part instances after development
+  int max_recursive_limit = 8;  ///< per node
   int max_neurons_per_node = 6;
   int max_brain_neurons = 8;
-  int max_inputs = 3;              ///< inputs stored per neuron
-  double min_part_size = 0.05;    ///< metres, any box side after development
-  double max_part_size = 1.5;     ///< metres, any box side after development
+  int max_inputs = 3;                            ///< inputs stored per neuron
+  double min_part_size = 0.05;                   ///< metres, any box side after development
+  double max_part_size = 1.5;                    ///< metres, any box side after development
   double min_density = 200, max_density = 3000;  ///< kg / m^3
-  double max_weight = 5;          ///< |weight| of an input
+  double max_weight = 5;                         ///< |weight| of an input
   double max_scale = 2, min_scale = 0.5;
-  double max_frequency = 4;       ///< Hz, oscillators and joint controllers
+  double max_frequency = 4;  ///< Hz, oscillators and joint controllers
 };
 
 //---------------------------------------------------------------- operations
 
-/// A random genome within `limits`, drawn from `rng`-compatible stream (seed, generation, individual).
+/// A random genome within `limits`, drawn from `rng`-compatible stream (seed, generation,
+/// individual).
 Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_t generation = 0,
                     std::uint64_t individual = 0);
 

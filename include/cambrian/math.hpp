@@ -19,12 +19,18 @@ struct Vec3 {
   friend bool operator==(Vec3 a, Vec3 b) = default;
 };
 
-inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline double dot(Vec3 a, Vec3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 inline Vec3 cross(Vec3 a, Vec3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
-inline Vec3 hadamard(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+inline double norm(Vec3 a) {
+  return std::sqrt(dot(a, a));
+}
+inline Vec3 hadamard(Vec3 a, Vec3 b) {
+  return {a.x * b.x, a.y * b.y, a.z * b.z};
+}
 
 /// A unit quaternion (w, x, y, z) rotating vectors from a local frame into its parent frame.
 struct Quat {
@@ -33,12 +39,13 @@ struct Quat {
 };
 
 inline Quat operator*(Quat a, Quat b) {
-  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-          a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+  return {
+      a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+      a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
-inline Quat conjugate(Quat q) { return {q.w, -q.x, -q.y, -q.z}; }
+inline Quat conjugate(Quat q) {
+  return {q.w, -q.x, -q.y, -q.z};
+}
 
 /// Rotates v by q.
 inline Vec3 rotate(Quat q, Vec3 v) {
@@ -62,7 +69,9 @@ struct Transform {
   Quat rotation;
 };
 
-inline Vec3 apply(const Transform& t, Vec3 p) { return rotate(t.rotation, p) + t.position; }
+inline Vec3 apply(const Transform& t, Vec3 p) {
+  return rotate(t.rotation, p) + t.position;
+}
 inline Transform compose(const Transform& a, const Transform& b) {
   return {apply(a, b.position), a.rotation * b.rotation};
 }

@@ -14,10 +14,11 @@ struct MutationSettings {
   double remove_node_rate = 0.03;
   double add_connection_rate = 0.05;
   double remove_connection_rate = 0.03;
-  double repoint_rate = 0.05;    ///< chance each connection is re-pointed to another node
+  double repoint_rate = 0.05;  ///< chance each connection is re-pointed to another node
   double add_neuron_rate = 0.05;
   double remove_neuron_rate = 0.03;
-  bool keep_unconnected = true;  ///< keep nodes unreachable from the root (Chaumont) or collect them
+  bool keep_unconnected =
+      true;  ///< keep nodes unreachable from the root (Chaumont) or collect them
 };
 
 /// Sims' mutation: parameter perturbation scaled to each parameter's range, node and connection

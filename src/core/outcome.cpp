@@ -28,7 +28,8 @@ const char* statusName(EvalStatus status) {
 
 double Outcome::measure(const std::string& name) const {
   for (const Measure& m : measures) {
-    if (m.name == name) return m.value;
+    if (m.name == name)
+      return m.value;
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

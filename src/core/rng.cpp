@@ -1,8 +1,8 @@
 #include "cambrian/rng.hpp"
 
-#include <cmath>
-
 #include <Random123/philox.h>
+
+#include <cmath>
 
 namespace cambrian {
 
@@ -17,7 +17,8 @@ void Rng::refill() {
   r123::Philox4x64::ctr_type counter = {{generation_, individual_, block_, 0}};
   r123::Philox4x64::key_type key = {{key_[0], key_[1]}};
   r123::Philox4x64::ctr_type out = philox(counter, key);
-  for (int i = 0; i < 4; ++i) buffer_[i] = out.v[i];
+  for (int i = 0; i < 4; ++i)
+    buffer_[i] = out.v[i];
 }
 
 std::uint64_t Rng::nextU64() {
@@ -31,7 +32,9 @@ std::uint64_t Rng::nextU64() {
   return buffer_[slot];
 }
 
-double Rng::uniform() { return static_cast<double>(nextU64() >> 11) * 0x1.0p-53; }
+double Rng::uniform() {
+  return static_cast<double>(nextU64() >> 11) * 0x1.0p-53;
+}
 
 std::uint64_t Rng::below(std::uint64_t n) {
   // rejection sampling removes modulo bias

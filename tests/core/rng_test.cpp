@@ -1,9 +1,9 @@
 #include "cambrian/rng.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <set>
-
-#include <gtest/gtest.h>
 
 namespace cambrian {
 namespace {
@@ -11,7 +11,8 @@ namespace {
 // the same key and counter give the same stream
 TEST(Rng, SameKeySameStream) {
   Rng a(42, RngPurpose::test, 3, 7), b(42, RngPurpose::test, 3, 7);
-  for (int i = 0; i < 100; ++i) EXPECT_EQ(a.nextU64(), b.nextU64());
+  for (int i = 0; i < 100; ++i)
+    EXPECT_EQ(a.nextU64(), b.nextU64());
 }
 
 // any change of seed, purpose, generation or individual changes the stream
@@ -57,7 +58,8 @@ TEST(Rng, DistributionsInRange) {
 TEST(Rng, BetweenInclusive) {
   Rng rng(9, RngPurpose::test);
   std::set<int> seen;
-  for (int i = 0; i < 1000; ++i) seen.insert(rng.between(-2, 2));
+  for (int i = 0; i < 1000; ++i)
+    seen.insert(rng.between(-2, 2));
   EXPECT_EQ(seen, (std::set<int>{-2, -1, 0, 1, 2}));
 }
 
