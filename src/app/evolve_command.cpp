@@ -12,7 +12,9 @@
 #include "parallel/scheduler.hpp"
 #include "parallel/worker.hpp"
 
+#include <charconv>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace cambrian {
@@ -127,6 +129,57 @@ std::vector<std::string> splitList(const std::vector<std::string>& values) {
   return items;
 }
 
+// one option value as INI text (numbers in the shortest form that reads back exactly)
+std::string valueText(const boost::any& value) {
+  char number[64];
+  if (const auto* v = boost::any_cast<double>(&value))
+    return std::string(number, std::to_chars(number, number + sizeof number, *v).ptr);
+  if (const auto* v = boost::any_cast<float>(&value))
+    return std::string(number, std::to_chars(number, number + sizeof number, *v).ptr);
+  if (const auto* v = boost::any_cast<bool>(&value))
+    return *v ? "true" : "false";
+  if (const auto* v = boost::any_cast<std::string>(&value))
+    return *v;
+  if (const auto* v = boost::any_cast<int>(&value))
+    return std::to_string(*v);
+  if (const auto* v = boost::any_cast<unsigned>(&value))
+    return std::to_string(*v);
+  if (const auto* v = boost::any_cast<long>(&value))
+    return std::to_string(*v);
+  if (const auto* v = boost::any_cast<unsigned long>(&value))
+    return std::to_string(*v);
+  if (const auto* v = boost::any_cast<long long>(&value))
+    return std::to_string(*v);
+  if (const auto* v = boost::any_cast<unsigned long long>(&value))
+    return std::to_string(*v);
+  if (const auto* v = boost::any_cast<std::vector<std::string>>(&value)) {
+    std::string text;
+    for (const std::string& item : *v)
+      text += (text.empty() ? "" : " ") + item;
+    return text;
+  }
+  return "?";
+}
+
+// the effective settings as INI text: every [section] key = value, sorted (history provenance)
+std::string configText(const po::options_description& settings, const po::variables_map& vm) {
+  std::map<std::string, std::map<std::string, std::string>> sections;
+  for (const auto& option : settings.options()) {
+    const std::string& name = option->long_name();
+    std::size_t dot = name.find('.');
+    if (dot == std::string::npos || !vm.count(name))
+      continue;
+    sections[name.substr(0, dot)][name.substr(dot + 1)] = valueText(vm[name].value());
+  }
+  std::string text;
+  for (const auto& [section, keys] : sections) {
+    text += (text.empty() ? "[" : "\n[") + section + "]\n";
+    for (const auto& [key, value] : keys)
+      text += key + " = " + value + "\n";
+  }
+  return text;
+}
+
 // what parsing produced: settings, or an exit code and message
 struct Setup {
   EvolveSettings settings;
@@ -163,7 +216,12 @@ Setup parse(int argc, char** argv, bool read_seeds) {
     std::ostringstream text;
     text << "usage: mpirun -np N cambrian evolve --config FILE [--seed S] [--out DIR] [options]\n"
          << "Rank 0 breeds, ranks 1..N-1 evaluate; with one rank it evaluates in process.\n"
-         << "Every key works in the INI file ([section] key = value) and as --section.key.\n\n"
+         << "Every key works in the INI file ([section] key = value) and as --section.key.\n"
+         << "Writes DIR/history.h5 (HDF5, appended and flushed every generation, readable while\n"
+         << "the run goes on: provenance attributes, /individuals with genome bytes,\n"
+         << "/generations; schema in docs/hdf5-schema.md, Python reader in\n"
+         << "analysis/cambrian_history.py) and DIR/individuals.tsv, DIR/generations.tsv at the\n"
+         << "end.\n\n"
          << cli << "\n"
          << settings;
     setup.help = true;
@@ -180,6 +238,7 @@ Setup parse(int argc, char** argv, bool read_seeds) {
     s.run.quiet = true;
   if (verbose)
     s.run.verbose = true;
+  s.run.config_text = configText(settings, vm);
 
   // words to enums and range checks, naming the file
   std::string where = config_path.empty() ? "" : config_path + ": ";
@@ -266,6 +325,7 @@ int runEvolve(int argc, char** argv) {
     }
     // Chaumont 5.5: new bodies that overlap themselves are redrawn before evaluation
     RunSettings run = s.run;
+    run.rank_count = mpi.size();
     if (s.creature.task.kind != TaskKind::synthetic) {
       run.viable = [&s](const Genome& genome) {
         return isViable(genome, s.creature.limits, s.creature.physics);
@@ -280,6 +340,7 @@ int runEvolve(int argc, char** argv) {
     std::cout << "digest " << result.digest << "\n"
               << "rank0_cpu_seconds " << result.rank0_cpu_seconds << "\n"
               << "wall_seconds " << result.wall_seconds << "\n"
+              << "history " << s.run.out_dir << "/history.h5\n"
               << "tables " << s.run.out_dir << "/individuals.tsv " << s.run.out_dir
               << "/generations.tsv" << std::endl;
     return 0;

@@ -5,10 +5,12 @@
 #include "evolution/breeder.hpp"
 #include "evolution/statistics.hpp"
 #include "parallel/mpi_context.hpp"
+#include "store/history.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <ostream>
 
 namespace cambrian {
@@ -33,12 +35,30 @@ void appendRecords(const Population& population, std::vector<IndividualRecord>& 
   }
 }
 
-// individuals.tsv and generations.tsv, atomically
-void writeTables(const std::string& dir, const RunResult& result) {
+// the output directory
+void makeOutputDirectory(const std::string& dir) {
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   if (error)
     throw Error(ExitCode::output_file, dir + ": cannot create directory: " + error.message());
+}
+
+// DIR/history.h5 with the run's provenance, or none when the run keeps no history
+std::unique_ptr<HistoryWriter> openHistory(const EvolutionSettings& settings,
+                                           const RunSettings& run) {
+  if (!run.history)
+    return nullptr;
+  makeOutputDirectory(run.out_dir);
+  HistoryAttributes attributes;
+  attributes.config_text = run.config_text;
+  attributes.seed = settings.seed;
+  attributes.rank_count = run.rank_count;
+  return std::make_unique<HistoryWriter>(run.out_dir + "/history.h5", attributes);
+}
+
+// individuals.tsv and generations.tsv, atomically
+void writeTables(const std::string& dir, const RunResult& result) {
+  makeOutputDirectory(dir);
   std::string individuals = individualsTsvHeader();
   for (const IndividualRecord& r : result.individuals)
     individuals += individualsTsvRow(r);
@@ -75,6 +95,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
   if (run.viable)
     breeder.setViabilityCheck(run.viable);
   Population population = breeder.initialPopulation(seeds);
+  std::unique_ptr<HistoryWriter> history = openHistory(settings, run);
 
   for (int g = 0; g < settings.generations; ++g) {
     auto generation_start = Clock::now();
@@ -93,12 +114,28 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     digest.add(population);
     appendRecords(population, result.individuals);
 
+    // the history rows of the evaluated generation (appended once its timings are known)
+    std::vector<HistoryIndividual> history_rows;
+    HistoryGeneration history_generation;
+    if (history) {
+      for (const Individual& individual : population.individuals)
+        history_rows.push_back(makeHistoryIndividual(individual));
+      history_generation = makeHistoryGeneration(record, population);
+    }
+
     // breed the next generation (rank 0's serial part)
     if (g + 1 < settings.generations)
       population = breeder.nextGeneration(population);
     record.wall_seconds = std::chrono::duration<double>(Clock::now() - generation_start).count();
     record.rank0_serial_seconds = std::max(0.0, record.wall_seconds - span.span_seconds);
     result.generations.push_back(record);
+
+    // append and flush the generation to the history
+    if (history) {
+      history_generation.rank0_serial_seconds = record.rank0_serial_seconds;
+      history_generation.wall_seconds = record.wall_seconds;
+      history->appendGeneration(history_rows, history_generation);
+    }
 
     // progress
     double elapsed = std::chrono::duration<double>(Clock::now() - run_start).count();
@@ -122,6 +159,8 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
   result.digest = digest.hex();
   result.rank0_cpu_seconds = processCpuSeconds() - cpu_start;
   result.wall_seconds = std::chrono::duration<double>(Clock::now() - run_start).count();
+  if (history)
+    history->close();
   writeTables(run.out_dir, result);
   return result;
 }

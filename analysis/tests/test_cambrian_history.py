@@ -1,0 +1,136 @@
+"""Tests of the history reader and the fitness plot, on the history.h5 of a small synthetic
+`cambrian evolve` run (CTest runs it first and passes its directory in CAMBRIAN_RUN_DIR)."""
+
+import csv
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+import cambrian_history as ch  # noqa: E402
+
+RUN_DIR = os.environ.get("CAMBRIAN_RUN_DIR")
+POPULATION = int(os.environ.get("CAMBRIAN_RUN_POPULATION", "0"))
+GENERATIONS = int(os.environ.get("CAMBRIAN_RUN_GENERATIONS", "0"))
+pytestmark = pytest.mark.skipif(not RUN_DIR, reason="CAMBRIAN_RUN_DIR not set (run through ctest)")
+
+
+@pytest.fixture(scope="module")
+def history_path():
+    return os.path.join(RUN_DIR, "history.h5")
+
+
+@pytest.fixture(scope="module")
+def history(history_path):
+    with ch.History(history_path) as h:
+        yield h
+
+
+def read_tsv(name):
+    with open(os.path.join(RUN_DIR, name), newline="") as handle:
+        return list(csv.DictReader(handle, delimiter="\t"))
+
+
+def test_attributes_name_the_run(history):
+    a = history.attributes
+    assert a["format"] == "cambrian-history"
+    assert int(a["format_version"]) == 1
+    assert int(a["seed"]) == 3
+    assert int(a["rank_count"]) == 1
+    assert a["bullet_precision"] == "float64"
+    assert a["start_time"].endswith("Z") and len(a["start_time"]) == 20
+    assert "[evolution]" in a["config_text"] and f"population = {POPULATION}" in a["config_text"]
+    assert "name = synthetic" in a["config_text"]
+    assert len(a["config_hash"]) == 16 and a["cambrian_version"] and a["git_hash"]
+
+
+def test_generations_match_the_tsv_table(history):
+    g = history.generations()
+    rows = read_tsv("generations.tsv")
+    assert len(g["generation"]) == GENERATIONS == len(rows)
+    assert list(g["generation"]) == list(range(GENERATIONS))
+    for i, row in enumerate(rows):
+        assert g["best"][i] == float(row["best"])
+        assert g["median"][i] == float(row["median"])
+        assert g["best_id"][i] == int(row["best_id"])
+    assert np.all(g["q25"] <= g["median"]) and np.all(g["median"] <= g["q75"])
+    assert np.all((g["distinct_genomes"] >= 1) & (g["distinct_genomes"] <= POPULATION))
+    assert np.all(g["checkpoint_seconds"] == 0)
+    assert history.units("generations", "wall_seconds") == "s"
+
+
+def test_individuals_match_the_tsv_table(history):
+    t = history.individuals()
+    rows = read_tsv("individuals.tsv")
+    assert len(t["id"]) == POPULATION * GENERATIONS == len(rows)
+    assert list(t["id"]) == [int(r["id"]) for r in rows]
+    assert [float(r["fitness"]) for r in rows] == list(t["fitness"])
+    operators = history.operator_names()
+    assert [operators[o] for o in t["operator"]] == [r["operator"] for r in rows]
+    statuses = history.status_names()
+    assert [statuses[s] for s in t["status"]] == [r["status"] for r in rows]
+    # generation 0 has no parents; crossover children have two
+    first = t["generation"] == 0
+    assert np.all(t["parent_a"][first] == ch.NO_ID)
+    crossover = t["operator"] == operators.index("crossover")
+    assert crossover.any() and np.all(t["parent_b"][crossover] != ch.NO_ID)
+    # the synthetic task reports cost and nodes, not distance
+    assert np.all(np.isnan(t["measure:distance"]))
+    assert np.all(t["measure:nodes"] >= 1)
+    assert history.measure_units()[history.measure_names().index("cost_us")] == "us"
+
+
+def test_best_of_each_generation_is_in_the_individuals(history):
+    t = history.individuals()
+    g = history.generations()
+    for i, generation in enumerate(g["generation"]):
+        mine = t["generation"] == generation
+        assert t["fitness"][mine].max() == g["best"][i]
+
+
+def test_genome_bytes_by_id(history):
+    t = history.individuals()
+    for individual in t["id"][:5]:
+        genome = history.genome_bytes(int(individual))
+        assert genome[:4] == b"CMBG"
+    with pytest.raises(KeyError):
+        history.genome_bytes(10**9)
+
+
+def test_load_returns_everything(history_path):
+    attributes, individuals, generations = ch.load(history_path)
+    assert attributes["format"] == "cambrian-history"
+    assert len(individuals["id"]) == POPULATION * GENERATIONS
+    assert len(generations["best"]) == GENERATIONS
+
+
+def test_bad_files_raise_history_error(tmp_path):
+    with pytest.raises(ch.HistoryError, match="no such"):
+        ch.History(tmp_path / "missing.h5")
+    text = tmp_path / "text.h5"
+    text.write_text("not hdf5\n")
+    with pytest.raises(ch.HistoryError, match="text.h5"):
+        ch.History(text)
+
+
+def run_plot(*arguments):
+    script = os.path.join(os.path.dirname(HERE), "plot_fitness.py")
+    return subprocess.run([sys.executable, script, *arguments], capture_output=True, text=True)
+
+
+def test_plot_writes_a_png(history_path, tmp_path):
+    output = tmp_path / "fitness.png"
+    result = run_plot(history_path, "--output", str(output))
+    assert result.returncode == 0, result.stderr
+    assert output.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_plot_help_and_bad_file(tmp_path):
+    result = run_plot("--help")
+    assert result.returncode == 0 and "--output" in result.stdout
+    result = run_plot(str(tmp_path / "missing.h5"), "--output", str(tmp_path / "x.png"))
+    assert result.returncode == 4 and "missing.h5" in result.stderr

@@ -1,0 +1,836 @@
+#include "store/history.hpp"
+
+#include "cambrian/error.hpp"
+#include "cambrian/version.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <limits>
+#include <set>
+#include <type_traits>
+#include <unordered_map>
+
+namespace cambrian {
+
+namespace {
+
+// rows per chunk of the per-row datasets; bytes per chunk of the genome byte stream
+constexpr hsize_t kRowChunk = 1024;
+constexpr hsize_t kByteChunk = 65536;
+constexpr int kDeflateLevel = 4;
+
+// one HDF5 identifier, closed with the matching function
+class Handle {
+ public:
+  Handle() = default;
+  Handle(hid_t id, herr_t (*closer)(hid_t)) : id_(id), close_(closer) {}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
+  Handle& operator=(Handle&& other) noexcept {
+    if (this != &other) {
+      reset();
+      id_ = other.id_;
+      close_ = other.close_;
+      other.id_ = -1;
+    }
+    return *this;
+  }
+  ~Handle() { reset(); }
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+  herr_t reset() {
+    herr_t status = 0;
+    if (id_ >= 0 && close_)
+      status = close_(id_);
+    id_ = -1;
+    return status;
+  }
+
+ private:
+  hid_t id_ = -1;
+  herr_t (*close_)(hid_t) = nullptr;
+};
+
+// silences HDF5's error stack printing for the lifetime of the object (errors become ours)
+class QuietErrors {
+ public:
+  QuietErrors() {
+    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
+  QuietErrors(const QuietErrors&) = delete;
+  QuietErrors& operator=(const QuietErrors&) = delete;
+
+ private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
+};
+
+// the native HDF5 type of a column's C++ type
+template <class T>
+hid_t nativeType() {
+  if constexpr (std::is_same_v<T, std::uint64_t>)
+    return H5T_NATIVE_UINT64;
+  else if constexpr (std::is_same_v<T, std::int32_t>)
+    return H5T_NATIVE_INT32;
+  else if constexpr (std::is_same_v<T, std::uint8_t>)
+    return H5T_NATIVE_UINT8;
+  else
+    return H5T_NATIVE_DOUBLE;
+}
+
+// a column of a table group: name, stored type, width (1, or the measure count), unit, meaning
+struct Column {
+  const char* name;
+  hid_t (*type)();
+  hsize_t width;
+  const char* units;
+  const char* description;
+};
+
+// the per-individual columns (genome_bytes is a separate byte stream)
+const std::vector<Column>& individualColumns() {
+  static const std::vector<Column> columns = {
+      {"generation", nativeType<std::uint64_t>, 1, "1", "generation the row belongs to"},
+      {"id", nativeType<std::uint64_t>, 1, "1", "individual id, unique in the run"},
+      {"parent_a", nativeType<std::uint64_t>, 1, "1",
+       "first parent id; 18446744073709551615 (UINT64_MAX) when absent"},
+      {"parent_b", nativeType<std::uint64_t>, 1, "1",
+       "second parent id; 18446744073709551615 (UINT64_MAX) when absent"},
+      {"operator", nativeType<std::uint8_t>, 1, "1",
+       "what made the individual; index into the names attribute"},
+      {"fitness", nativeType<double>, 1, "task", "fitness (task units; failures get 0)"},
+      {"status", nativeType<std::uint8_t>, 1, "1",
+       "how the evaluation ended; index into the names attribute"},
+      {"measures", nativeType<double>, kHistoryMeasureCount, "see units attribute",
+       "jury measures, one column per name in the names attribute; NaN when absent"},
+      {"parts", nativeType<std::int32_t>, 1, "1", "body parts of the developed creature"},
+      {"joints", nativeType<std::int32_t>, 1, "1", "joints of the developed creature"},
+      {"neurons", nativeType<std::int32_t>, 1, "1", "neurons of the developed creature"},
+      {"steps", nativeType<std::uint64_t>, 1, "1", "physics steps simulated"},
+      {"eval_seconds", nativeType<double>, 1, "s",
+       "evaluation wall time (0 for elites copied unevaluated)"},
+      {"worker_rank", nativeType<std::int32_t>, 1, "1",
+       "MPI rank that evaluated it; -1 for copies, 0 for in-process runs"},
+      {"genome_offset", nativeType<std::uint64_t>, 1, "byte",
+       "offset of the genome in genome_bytes"},
+      {"genome_size", nativeType<std::uint64_t>, 1, "byte", "length of the genome in genome_bytes"},
+  };
+  return columns;
+}
+
+// the per-generation columns
+const std::vector<Column>& generationColumns() {
+  auto u64 = nativeType<std::uint64_t>;
+  auto f64 = nativeType<double>;
+  static const std::vector<Column> columns = {
+      {"generation", u64, 1, "1", "generation number, from 0"},
+      {"count", u64, 1, "1", "individuals in the generation"},
+      {"failed", u64, 1, "1", "individuals whose status is not ok"},
+      {"best", f64, 1, "task", "best fitness"},
+      {"mean", f64, 1, "task", "mean fitness"},
+      {"stddev", f64, 1, "task", "standard deviation of fitness"},
+      {"worst", f64, 1, "task", "worst fitness"},
+      {"q25", f64, 1, "task", "first quartile of fitness (linear interpolation)"},
+      {"median", f64, 1, "task", "median fitness"},
+      {"q75", f64, 1, "task", "third quartile of fitness"},
+      {"best_id", u64, 1, "1", "id of the best individual (ties: lowest id)"},
+      {"evaluations", u64, 1, "1", "individuals evaluated (elites are not)"},
+      {"workers", nativeType<std::int32_t>, 1, "1", "evaluating ranks"},
+      {"distinct_genomes", u64, 1, "1", "distinct genome byte strings (diversity)"},
+      {"rank0_serial_seconds", f64, 1, "s", "rank 0 busy outside the evaluation span"},
+      {"evaluation_span_seconds", f64, 1, "s", "first request sent to last result received"},
+      {"worker_busy_seconds", f64, 1, "s", "sum of evaluation wall times"},
+      {"worker_idle_seconds", f64, 1, "s", "workers * span - busy"},
+      {"checkpoint_seconds", f64, 1, "s", "time writing the checkpoint (0: none written)"},
+      {"wall_seconds", f64, 1, "s", "the whole generation on rank 0"},
+      {"unix_time", f64, 1, "s since 1970-01-01T00:00:00Z", "wall clock when the row was written"},
+  };
+  return columns;
+}
+
+// names of the enum values 0..n-1
+std::vector<std::string> originNames() {
+  std::vector<std::string> names;
+  for (int i = 0; i <= static_cast<int>(Origin::graft); ++i)
+    names.push_back(originName(static_cast<Origin>(i)));
+  return names;
+}
+
+std::vector<std::string> statusNames() {
+  std::vector<std::string> names;
+  for (int i = 0; i <= static_cast<int>(EvalStatus::failed); ++i)
+    names.push_back(statusName(static_cast<EvalStatus>(i)));
+  return names;
+}
+
+// a variable-length UTF-8 string type
+Handle stringType() {
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  return type;
+}
+
+// attribute writers (they return false on failure; the caller names the file)
+bool writeString(hid_t location, const char* name, const std::string& value) {
+  Handle type = stringType();
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Aclose);
+  const char* text = value.c_str();
+  return attribute.valid() && H5Awrite(attribute.get(), type.get(), &text) >= 0;
+}
+
+bool writeStrings(hid_t location, const char* name, const std::vector<std::string>& values) {
+  Handle type = stringType();
+  hsize_t size = values.size();
+  Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose);
+  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Aclose);
+  std::vector<const char*> texts;
+  for (const std::string& value : values)
+    texts.push_back(value.c_str());
+  return attribute.valid() && H5Awrite(attribute.get(), type.get(), texts.data()) >= 0;
+}
+
+template <class T>
+bool writeScalar(hid_t location, const char* name, T value) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attribute(
+      H5Acreate2(location, name, nativeType<T>(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  return attribute.valid() && H5Awrite(attribute.get(), nativeType<T>(), &value) >= 0;
+}
+
+// attribute readers: nullopt-like false when missing or of the wrong kind
+bool readString(hid_t location, const char* name, std::string& value) {
+  if (H5Aexists(location, name) <= 0)
+    return false;
+  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
+  Handle type(H5Aget_type(attribute.get()), H5Tclose);
+  if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING)
+    return false;
+  Handle space(H5Aget_space(attribute.get()), H5Sclose);
+  if (H5Sget_simple_extent_npoints(space.get()) != 1)
+    return false;
+  if (H5Tis_variable_str(type.get()) > 0) {
+    Handle memory = stringType();
+    char* text = nullptr;
+    if (H5Aread(attribute.get(), memory.get(), &text) < 0 || !text)
+      return false;
+    value = text;
+    H5free_memory(text);
+    return true;
+  }
+  std::size_t size = H5Tget_size(type.get());
+  std::string buffer(size, '\0');
+  if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0)
+    return false;
+  value = buffer.substr(0, buffer.find('\0'));
+  return true;
+}
+
+template <class T>
+bool readScalar(hid_t location, const char* name, T& value) {
+  if (H5Aexists(location, name) <= 0)
+    return false;
+  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
+  Handle type(H5Aget_type(attribute.get()), H5Tclose);
+  Handle space(H5Aget_space(attribute.get()), H5Sclose);
+  if (!type.valid() || H5Tget_class(type.get()) != H5T_INTEGER ||
+      H5Sget_simple_extent_npoints(space.get()) != 1)
+    return false;
+  return H5Aread(attribute.get(), nativeType<T>(), &value) >= 0;
+}
+
+// an empty extendible chunked deflate dataset of `width` columns (1: a 1-D dataset)
+Handle createTable(hid_t group, const char* name, hid_t type, hsize_t width, hsize_t chunk) {
+  int rank = width == 1 ? 1 : 2;
+  hsize_t dims[2] = {0, width};
+  hsize_t max_dims[2] = {H5S_UNLIMITED, width};
+  hsize_t chunk_dims[2] = {chunk, width};
+  Handle space(H5Screate_simple(rank, dims, max_dims), H5Sclose);
+  Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  H5Pset_chunk(properties.get(), rank, chunk_dims);
+  H5Pset_shuffle(properties.get());
+  H5Pset_deflate(properties.get(), kDeflateLevel);
+  return Handle(
+      H5Dcreate2(group, name, type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
+      H5Dclose);
+}
+
+// appends `rows` rows of `width` values to a dataset; false on failure
+bool appendRows(hid_t dataset, hid_t memory_type, const void* data, hsize_t rows, hsize_t width) {
+  Handle space(H5Dget_space(dataset), H5Sclose);
+  hsize_t dims[2] = {0, width};
+  int rank = H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  if (rank < 1)
+    return false;
+  hsize_t start = dims[0];
+  dims[0] += rows;
+  if (H5Dset_extent(dataset, dims) < 0)
+    return false;
+  if (rows == 0)
+    return true;
+  Handle file_space(H5Dget_space(dataset), H5Sclose);
+  hsize_t offset[2] = {start, 0};
+  hsize_t count[2] = {rows, width};
+  if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr) < 0)
+    return false;
+  Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
+  return H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data) >=
+         0;
+}
+
+// the values of one field of every row, as the column's type
+template <class T, class Row, class Get>
+std::vector<T> gather(const std::vector<Row>& rows, Get get) {
+  std::vector<T> values;
+  values.reserve(rows.size());
+  for (const Row& row : rows)
+    values.push_back(static_cast<T>(get(row)));
+  return values;
+}
+
+// a whole dataset as T values (rows * width); false when missing or unreadable
+template <class T>
+bool readTable(hid_t group, const char* name, hsize_t width, std::vector<T>& values,
+               hsize_t& rows) {
+  if (H5Lexists(group, name, H5P_DEFAULT) <= 0)
+    return false;
+  Handle dataset(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid())
+    return false;
+  Handle space(H5Dget_space(dataset.get()), H5Sclose);
+  hsize_t dims[2] = {0, 1};
+  int rank = H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  if (rank < 1 || rank > 2 || (rank == 1 && width != 1) || (rank == 2 && dims[1] != width))
+    return false;
+  rows = dims[0];
+  values.resize(rows * width);
+  if (rows == 0)
+    return true;
+  return H5Dread(dataset.get(), nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0;
+}
+
+// FNV-1a 64 over bytes
+std::uint64_t fnv1a(const std::uint8_t* data, std::size_t size) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (std::size_t i = 0; i < size; ++i) {
+    hash ^= data[i];
+    hash *= 0x100000001b3ULL;
+  }
+  return hash;
+}
+
+double unixNow() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+const std::array<HistoryMeasure, kHistoryMeasureCount>& historyMeasures() {
+  static const std::array<HistoryMeasure, kHistoryMeasureCount> measures = {{
+      {"distance", "m"},
+      {"body_length", "m"},
+      {"body_lengths", "1"},
+      {"height", "m"},
+      {"cost_us", "us"},
+      {"nodes", "1"},
+  }};
+  return measures;
+}
+
+std::string configHash(const std::string& config_text) {
+  char text[17];
+  std::snprintf(
+      text, sizeof text, "%016llx",
+      static_cast<unsigned long long>(
+          fnv1a(reinterpret_cast<const std::uint8_t*>(config_text.data()), config_text.size())));
+  return text;
+}
+
+std::string utcTimestamp() {
+  std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+HistoryIndividual makeHistoryIndividual(const Individual& individual) {
+  HistoryIndividual row;
+  row.generation = individual.generation;
+  row.id = individual.id;
+  if (!individual.parents.empty())
+    row.parent_a = individual.parents[0];
+  if (individual.parents.size() > 1)
+    row.parent_b = individual.parents[1];
+  row.origin = individual.origin;
+  row.fitness = individual.fitness();
+  const Outcome& outcome = individual.outcome;
+  row.status = outcome.status;
+  // measures by name into the fixed columns
+  for (std::size_t i = 0; i < kHistoryMeasureCount; ++i)
+    row.measures[i] = outcome.measure(historyMeasures()[i].name);
+  row.parts = outcome.parts;
+  row.joints = outcome.joints;
+  row.neurons = outcome.neurons;
+  row.steps = outcome.steps;
+  row.eval_seconds = individual.eval_seconds;
+  row.worker_rank = individual.worker_rank;
+  row.genome = serializeGenome(individual.genome);
+  return row;
+}
+
+std::uint64_t distinctGenomes(const Population& population) {
+  std::set<std::vector<std::uint8_t>> seen;
+  for (const Individual& individual : population.individuals)
+    seen.insert(serializeGenome(individual.genome));
+  return seen.size();
+}
+
+HistoryGeneration makeHistoryGeneration(const GenerationRecord& record,
+                                        const Population& population) {
+  HistoryGeneration row;
+  const FitnessStats& s = record.stats;
+  row.generation = record.generation;
+  row.count = s.count;
+  row.failed = s.failed;
+  row.best = s.best;
+  row.mean = s.mean;
+  row.stddev = s.stddev;
+  row.worst = s.worst;
+  row.q25 = s.q25;
+  row.median = s.median;
+  row.q75 = s.q75;
+  row.best_id = s.best_id;
+  row.evaluations = record.evaluations;
+  row.workers = record.workers;
+  row.distinct_genomes = distinctGenomes(population);
+  row.rank0_serial_seconds = record.rank0_serial_seconds;
+  row.evaluation_span_seconds = record.evaluation_span_seconds;
+  row.worker_busy_seconds = record.worker_busy_seconds;
+  row.worker_idle_seconds = record.worker_idle_seconds;
+  row.wall_seconds = record.wall_seconds;
+  return row;
+}
+
+// ---------------------------------------------------------------------------------------------
+// writer
+
+struct HistoryWriter::Impl {
+  Handle file;
+  std::unordered_map<std::string, Handle> individuals;  // column name -> dataset
+  std::unordered_map<std::string, Handle> generations;
+  Handle genome_bytes;
+  std::uint64_t genome_end = 0;  // bytes in genome_bytes so far
+};
+
+HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attributes)
+    : path_(path), impl_(std::make_unique<Impl>()) {
+  QuietErrors quiet;
+  auto fail = [&](const std::string& what) {
+    impl_.reset();
+    throw Error(ExitCode::output_file, path_ + ": " + what);
+  };
+
+  // the file, newest format (SWMR needs it)
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_libver_bounds(access.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
+  impl_->file =
+      Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
+  if (!impl_->file.valid())
+    fail("cannot create HDF5 file");
+  hid_t file = impl_->file.get();
+
+  // provenance on the root group
+  if (attributes.config_hash.empty())
+    attributes.config_hash = configHash(attributes.config_text);
+  if (attributes.start_time.empty())
+    attributes.start_time = utcTimestamp();
+  if (attributes.cambrian_version.empty())
+    attributes.cambrian_version = kVersion;
+  if (attributes.git_hash.empty())
+    attributes.git_hash = kGitHash;
+  bool ok = writeString(file, "format", kHistoryFormatName) &&
+            writeScalar<std::int32_t>(file, "format_version", kHistoryFormatVersion) &&
+            writeString(file, "cambrian_version", attributes.cambrian_version) &&
+            writeString(file, "git_hash", attributes.git_hash) &&
+            writeString(file, "config_text", attributes.config_text) &&
+            writeString(file, "config_hash", attributes.config_hash) &&
+            writeScalar<std::uint64_t>(file, "seed", attributes.seed) &&
+            writeString(file, "bullet_precision", attributes.bullet_precision) &&
+            writeString(file, "start_time", attributes.start_time) &&
+            writeScalar<std::int32_t>(file, "rank_count", attributes.rank_count);
+  if (!ok)
+    fail("cannot write the root attributes");
+
+  // one group per table, one dataset per column, with units and descriptions
+  auto makeGroup = [&](const char* name, const std::vector<Column>& columns,
+                       std::unordered_map<std::string, Handle>& datasets, const char* about) {
+    Handle group(H5Gcreate2(file, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    if (!group.valid() || !writeString(group.get(), "description", about))
+      fail(std::string("cannot create group /") + name);
+    for (const Column& column : columns) {
+      Handle dataset =
+          createTable(group.get(), column.name, column.type(), column.width, kRowChunk);
+      if (!dataset.valid() || !writeString(dataset.get(), "units", column.units) ||
+          !writeString(dataset.get(), "description", column.description))
+        fail(std::string("cannot create dataset /") + name + "/" + column.name);
+      datasets.emplace(column.name, std::move(dataset));
+    }
+    return group;
+  };
+  Handle individuals = makeGroup("individuals", individualColumns(), impl_->individuals,
+                                 "one row per evaluated (or copied) individual");
+  Handle generations =
+      makeGroup("generations", generationColumns(), impl_->generations, "one row per generation");
+
+  // enum names and measure names / units
+  std::vector<std::string> measure_names, measure_units;
+  for (const HistoryMeasure& measure : historyMeasures()) {
+    measure_names.push_back(measure.name);
+    measure_units.push_back(measure.unit);
+  }
+  hid_t measures = impl_->individuals.at("measures").get();
+  H5Adelete(measures, "units");
+  if (!writeStrings(impl_->individuals.at("operator").get(), "names", originNames()) ||
+      !writeStrings(impl_->individuals.at("status").get(), "names", statusNames()) ||
+      !writeStrings(measures, "names", measure_names) ||
+      !writeStrings(measures, "units", measure_units))
+    fail("cannot write the names attributes of /individuals");
+
+  // the genome byte stream
+  impl_->genome_bytes =
+      createTable(individuals.get(), "genome_bytes", H5T_NATIVE_UINT8, 1, kByteChunk);
+  if (!impl_->genome_bytes.valid() || !writeString(impl_->genome_bytes.get(), "units", "byte") ||
+      !writeString(impl_->genome_bytes.get(), "description",
+                   "serialized genomes (serializeGenome), concatenated; row i is "
+                   "genome_bytes[genome_offset[i] : genome_offset[i] + genome_size[i]]"))
+    fail("cannot create dataset /individuals/genome_bytes");
+
+  // from here on readers may open the file while it grows
+  if (H5Fstart_swmr_write(file) < 0)
+    fail("cannot switch to SWMR write mode");
+}
+
+HistoryWriter::~HistoryWriter() {
+  try {
+    close();
+  } catch (...) {
+    // destructor: the caller did not ask for errors
+  }
+}
+
+void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
+                                     HistoryGeneration generation) {
+  if (!impl_)
+    throw Error(ExitCode::output_file, path_ + ": history file is closed");
+  QuietErrors quiet;
+  Impl& m = *impl_;
+  bool ok = true;
+  auto append = [&](std::unordered_map<std::string, Handle>& datasets, const char* name,
+                    const auto& values, hsize_t width) {
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    if (ok)
+      ok = appendRows(datasets.at(name).get(), nativeType<T>(), values.data(),
+                      values.size() / width, width);
+  };
+  using u64 = std::uint64_t;
+  using i32 = std::int32_t;
+  using u8 = std::uint8_t;
+  using R = HistoryIndividual;
+
+  // genome bytes first: rows never point past the stream
+  std::vector<u8> bytes;
+  std::vector<u64> offsets, sizes;
+  for (const R& row : rows) {
+    offsets.push_back(m.genome_end + bytes.size());
+    sizes.push_back(row.genome.size());
+    bytes.insert(bytes.end(), row.genome.begin(), row.genome.end());
+  }
+  ok = appendRows(m.genome_bytes.get(), H5T_NATIVE_UINT8, bytes.data(), bytes.size(), 1);
+  if (ok)
+    m.genome_end += bytes.size();
+
+  // the individual columns
+  auto& d = m.individuals;
+  append(d, "generation", gather<u64>(rows, [](const R& r) { return r.generation; }), 1);
+  append(d, "id", gather<u64>(rows, [](const R& r) { return r.id; }), 1);
+  append(d, "parent_a", gather<u64>(rows, [](const R& r) { return r.parent_a; }), 1);
+  append(d, "parent_b", gather<u64>(rows, [](const R& r) { return r.parent_b; }), 1);
+  append(d, "operator", gather<u8>(rows, [](const R& r) { return r.origin; }), 1);
+  append(d, "fitness", gather<double>(rows, [](const R& r) { return r.fitness; }), 1);
+  append(d, "status", gather<u8>(rows, [](const R& r) { return r.status; }), 1);
+  std::vector<double> measures;
+  for (const R& row : rows)
+    measures.insert(measures.end(), row.measures.begin(), row.measures.end());
+  append(d, "measures", measures, kHistoryMeasureCount);
+  append(d, "parts", gather<i32>(rows, [](const R& r) { return r.parts; }), 1);
+  append(d, "joints", gather<i32>(rows, [](const R& r) { return r.joints; }), 1);
+  append(d, "neurons", gather<i32>(rows, [](const R& r) { return r.neurons; }), 1);
+  append(d, "steps", gather<u64>(rows, [](const R& r) { return r.steps; }), 1);
+  append(d, "eval_seconds", gather<double>(rows, [](const R& r) { return r.eval_seconds; }), 1);
+  append(d, "worker_rank", gather<i32>(rows, [](const R& r) { return r.worker_rank; }), 1);
+  append(d, "genome_offset", offsets, 1);
+  append(d, "genome_size", sizes, 1);
+
+  // the generation row
+  if (generation.unix_time == 0)
+    generation.unix_time = unixNow();
+  const HistoryGeneration& g = generation;
+  auto& e = m.generations;
+  auto one = [](auto value) { return std::vector<decltype(value)>{value}; };
+  append(e, "generation", one(u64{g.generation}), 1);
+  append(e, "count", one(u64{g.count}), 1);
+  append(e, "failed", one(u64{g.failed}), 1);
+  append(e, "best", one(g.best), 1);
+  append(e, "mean", one(g.mean), 1);
+  append(e, "stddev", one(g.stddev), 1);
+  append(e, "worst", one(g.worst), 1);
+  append(e, "q25", one(g.q25), 1);
+  append(e, "median", one(g.median), 1);
+  append(e, "q75", one(g.q75), 1);
+  append(e, "best_id", one(u64{g.best_id}), 1);
+  append(e, "evaluations", one(u64{g.evaluations}), 1);
+  append(e, "workers", one(i32{g.workers}), 1);
+  append(e, "distinct_genomes", one(u64{g.distinct_genomes}), 1);
+  append(e, "rank0_serial_seconds", one(g.rank0_serial_seconds), 1);
+  append(e, "evaluation_span_seconds", one(g.evaluation_span_seconds), 1);
+  append(e, "worker_busy_seconds", one(g.worker_busy_seconds), 1);
+  append(e, "worker_idle_seconds", one(g.worker_idle_seconds), 1);
+  append(e, "checkpoint_seconds", one(g.checkpoint_seconds), 1);
+  append(e, "wall_seconds", one(g.wall_seconds), 1);
+  append(e, "unix_time", one(g.unix_time), 1);
+
+  // durable before the next generation starts
+  if (!ok || H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL) < 0) {
+    throw Error(ExitCode::output_file,
+                path_ + ": cannot append generation " + std::to_string(g.generation));
+  }
+}
+
+void HistoryWriter::close() {
+  if (!impl_)
+    return;
+  QuietErrors quiet;
+  std::unique_ptr<Impl> m = std::move(impl_);
+  // datasets before the file
+  m->individuals.clear();
+  m->generations.clear();
+  m->genome_bytes.reset();
+  if (m->file.reset() < 0)
+    throw Error(ExitCode::output_file, path_ + ": cannot close HDF5 file");
+}
+
+// ---------------------------------------------------------------------------------------------
+// reader
+
+struct HistoryReader::Impl {
+  Handle file;
+};
+
+HistoryReader::HistoryReader(const std::string& path)
+    : path_(path), impl_(std::make_unique<Impl>()) {
+  QuietErrors quiet;
+  auto fail = [&](const std::string& what) { throw InputError(path_ + ": " + what); };
+
+  // missing, not HDF5, truncated or corrupt
+  std::error_code error;
+  if (!std::filesystem::exists(path_, error))
+    fail("no such history file");
+  if (!std::filesystem::is_regular_file(path_, error))
+    fail("not a regular file");
+  htri_t is_hdf5 = H5Fis_hdf5(path_.c_str());
+  if (is_hdf5 == 0)
+    fail("not an HDF5 file (no HDF5 signature)");
+  if (is_hdf5 < 0)
+    fail("cannot read the HDF5 signature (unreadable or truncated file)");
+  impl_->file =
+      Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT), H5Fclose);
+  if (!impl_->file.valid())
+    impl_->file = Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!impl_->file.valid())
+    fail("HDF5 file cannot be opened (truncated or corrupt)");
+  hid_t file = impl_->file.get();
+
+  // a cambrian history of a version we read
+  std::string format;
+  if (!readString(file, "format", format))
+    fail("not a cambrian history (HDF5 file without the root attribute 'format')");
+  if (format != kHistoryFormatName)
+    fail("not a cambrian history (root attribute 'format' is '" + format + "', expected '" +
+         kHistoryFormatName + "')");
+  std::int32_t version = 0;
+  if (!readScalar(file, "format_version", version))
+    fail("root attribute 'format_version' missing or not an integer");
+  if (version < 1 || version > kHistoryFormatVersion)
+    fail("format_version " + std::to_string(version) + " is not supported (this cambrian reads " +
+         std::to_string(kHistoryFormatVersion) + ")");
+  HistoryAttributes& a = attributes_;
+  a.format_version = version;
+  std::int32_t ranks = 0;
+  bool ok = readString(file, "cambrian_version", a.cambrian_version) &&
+            readString(file, "git_hash", a.git_hash) &&
+            readString(file, "config_text", a.config_text) &&
+            readString(file, "config_hash", a.config_hash) && readScalar(file, "seed", a.seed) &&
+            readString(file, "bullet_precision", a.bullet_precision) &&
+            readString(file, "start_time", a.start_time) && readScalar(file, "rank_count", ranks);
+  if (!ok)
+    fail("a root attribute is missing or of the wrong type (corrupt history)");
+  a.rank_count = ranks;
+  for (const char* group : {"individuals", "generations"}) {
+    if (H5Lexists(file, group, H5P_DEFAULT) <= 0)
+      fail(std::string("group /") + group + " missing (corrupt history)");
+  }
+}
+
+HistoryReader::~HistoryReader() = default;
+
+std::vector<HistoryIndividual> HistoryReader::individuals() const {
+  QuietErrors quiet;
+  Handle group(H5Gopen2(impl_->file.get(), "individuals", H5P_DEFAULT), H5Gclose);
+  if (!group.valid())
+    throw InputError(path_ + ": cannot open group /individuals");
+
+  // every column, then the rows all of them hold (a live file may be mid-append)
+  std::vector<std::uint64_t> generation, id, parent_a, parent_b, offset, size, steps;
+  std::vector<std::uint8_t> origin, status, bytes;
+  std::vector<double> fitness, measures, eval_seconds;
+  std::vector<std::int32_t> parts, joints, neurons, worker_rank;
+  hsize_t rows = std::numeric_limits<hsize_t>::max();
+  auto column = [&](const char* name, auto& values, hsize_t width = 1) {
+    hsize_t n = 0;
+    if (!readTable(group.get(), name, width, values, n))
+      throw InputError(path_ + ": dataset /individuals/" + name + " missing or unreadable");
+    rows = std::min(rows, n);
+  };
+  column("generation", generation);
+  column("id", id);
+  column("parent_a", parent_a);
+  column("parent_b", parent_b);
+  column("operator", origin);
+  column("fitness", fitness);
+  column("status", status);
+  column("measures", measures, kHistoryMeasureCount);
+  column("parts", parts);
+  column("joints", joints);
+  column("neurons", neurons);
+  column("steps", steps);
+  column("eval_seconds", eval_seconds);
+  column("worker_rank", worker_rank);
+  column("genome_offset", offset);
+  column("genome_size", size);
+  hsize_t byte_count = 0;
+  if (!readTable(group.get(), "genome_bytes", 1, bytes, byte_count))
+    throw InputError(path_ + ": dataset /individuals/genome_bytes missing or unreadable");
+
+  // rows, checked against the byte stream and the enums
+  std::vector<HistoryIndividual> result;
+  result.reserve(rows);
+  for (hsize_t i = 0; i < rows; ++i) {
+    if (offset[i] > byte_count || size[i] > byte_count - offset[i])
+      break;  // bytes of a row still being appended
+    if (origin[i] > static_cast<std::uint8_t>(Origin::graft) ||
+        status[i] > static_cast<std::uint8_t>(EvalStatus::failed))
+      throw InputError(path_ + ": /individuals row " + std::to_string(i) +
+                       ": operator or status out of range (corrupt history)");
+    HistoryIndividual row;
+    row.generation = generation[i];
+    row.id = id[i];
+    row.parent_a = parent_a[i];
+    row.parent_b = parent_b[i];
+    row.origin = static_cast<Origin>(origin[i]);
+    row.fitness = fitness[i];
+    row.status = static_cast<EvalStatus>(status[i]);
+    std::copy_n(measures.begin() + i * kHistoryMeasureCount, kHistoryMeasureCount,
+                row.measures.begin());
+    row.parts = parts[i];
+    row.joints = joints[i];
+    row.neurons = neurons[i];
+    row.steps = steps[i];
+    row.eval_seconds = eval_seconds[i];
+    row.worker_rank = worker_rank[i];
+    row.genome.assign(bytes.begin() + offset[i], bytes.begin() + offset[i] + size[i]);
+    result.push_back(std::move(row));
+  }
+  return result;
+}
+
+std::vector<HistoryGeneration> HistoryReader::generations() const {
+  QuietErrors quiet;
+  Handle group(H5Gopen2(impl_->file.get(), "generations", H5P_DEFAULT), H5Gclose);
+  if (!group.valid())
+    throw InputError(path_ + ": cannot open group /generations");
+
+  // every column as doubles or integers, then the rows all of them hold
+  std::unordered_map<std::string, std::vector<double>> reals;
+  std::unordered_map<std::string, std::vector<std::uint64_t>> integers;
+  hsize_t rows = std::numeric_limits<hsize_t>::max();
+  for (const Column& c : generationColumns()) {
+    hsize_t n = 0;
+    bool real = c.type() == H5T_NATIVE_DOUBLE;
+    bool ok = real ? readTable(group.get(), c.name, 1, reals[c.name], n)
+                   : readTable(group.get(), c.name, 1, integers[c.name], n);
+    if (!ok)
+      throw InputError(path_ + ": dataset /generations/" + c.name + " missing or unreadable");
+    rows = std::min(rows, n);
+  }
+  std::vector<HistoryGeneration> result(rows);
+  for (hsize_t i = 0; i < rows; ++i) {
+    HistoryGeneration& g = result[i];
+    auto r = [&](const char* name) { return reals.at(name)[i]; };
+    auto n = [&](const char* name) { return integers.at(name)[i]; };
+    g.generation = n("generation");
+    g.count = n("count");
+    g.failed = n("failed");
+    g.best = r("best");
+    g.mean = r("mean");
+    g.stddev = r("stddev");
+    g.worst = r("worst");
+    g.q25 = r("q25");
+    g.median = r("median");
+    g.q75 = r("q75");
+    g.best_id = n("best_id");
+    g.evaluations = n("evaluations");
+    g.workers = static_cast<int>(n("workers"));
+    g.distinct_genomes = n("distinct_genomes");
+    g.rank0_serial_seconds = r("rank0_serial_seconds");
+    g.evaluation_span_seconds = r("evaluation_span_seconds");
+    g.worker_busy_seconds = r("worker_busy_seconds");
+    g.worker_idle_seconds = r("worker_idle_seconds");
+    g.checkpoint_seconds = r("checkpoint_seconds");
+    g.wall_seconds = r("wall_seconds");
+    g.unix_time = r("unix_time");
+  }
+  return result;
+}
+
+std::vector<std::uint8_t> HistoryReader::genomeBytes(std::uint64_t id) const {
+  for (HistoryIndividual& row : individuals()) {
+    if (row.id == id)
+      return std::move(row.genome);
+  }
+  throw InputError(path_ + ": no individual with id " + std::to_string(id));
+}
+
+Genome HistoryReader::genome(std::uint64_t id) const {
+  std::vector<std::uint8_t> bytes = genomeBytes(id);
+  try {
+    return deserializeGenome(bytes.data(), bytes.size());
+  } catch (const Error& e) {
+    throw InputError(path_ + ": genome of individual " + std::to_string(id) + ": " + e.what());
+  }
+}
+
+}  // namespace cambrian

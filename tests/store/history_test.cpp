@@ -1,0 +1,328 @@
+#include "store/history.hpp"
+
+#include "cambrian/error.hpp"
+#include "cambrian/version.hpp"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace cambrian {
+namespace {
+
+// a fresh path in the test temp directory
+std::string tempPath(const std::string& name) {
+  std::string path = testing::TempDir() + "/cambrian_history_test_" + name;
+  std::filesystem::remove(path);
+  return path;
+}
+
+// a few individuals of generation g with distinct genomes and a measure or two
+std::vector<HistoryIndividual> makeRows(std::uint64_t g, int count) {
+  std::vector<HistoryIndividual> rows;
+  for (int i = 0; i < count; ++i) {
+    HistoryIndividual row;
+    row.generation = g;
+    row.id = g * 100 + static_cast<std::uint64_t>(i);
+    row.origin = i == 0 ? Origin::elite : (i % 2 ? Origin::crossover : Origin::mutation);
+    if (g > 0) {
+      row.parent_a = (g - 1) * 100;
+      if (row.origin == Origin::crossover)
+        row.parent_b = (g - 1) * 100 + 1;
+    }
+    row.fitness = 0.5 * static_cast<double>(g) + 0.125 * i;
+    row.status = i == 3 ? EvalStatus::exploded : EvalStatus::ok;
+    row.measures.fill(std::nan(""));
+    row.measures[0] = 1.5 + i;
+    row.parts = 2 + i;
+    row.joints = 1 + i;
+    row.neurons = 3 * i;
+    row.steps = 2400;
+    row.eval_seconds = 0.01 * i;
+    row.worker_rank = i % 3;
+    row.genome.assign(static_cast<std::size_t>(5 + i), static_cast<std::uint8_t>(row.id));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+HistoryGeneration makeGeneration(std::uint64_t g) {
+  HistoryGeneration row;
+  row.generation = g;
+  row.count = 5;
+  row.failed = 1;
+  row.best = 1.0 + static_cast<double>(g);
+  row.mean = 0.5;
+  row.median = 0.25;
+  row.q25 = 0.125;
+  row.q75 = 0.75;
+  row.best_id = g * 100 + 4;
+  row.evaluations = 4;
+  row.workers = 2;
+  row.distinct_genomes = 5;
+  row.wall_seconds = 0.3;
+  return row;
+}
+
+HistoryAttributes makeAttributes() {
+  HistoryAttributes a;
+  a.config_text = "[evolution]\npopulation = 5\n";
+  a.seed = 42;
+  a.rank_count = 3;
+  return a;
+}
+
+// writes `generations` generations and closes
+void writeHistory(const std::string& path, int generations) {
+  HistoryWriter writer(path, makeAttributes());
+  for (int g = 0; g < generations; ++g)
+    writer.appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
+  writer.close();
+}
+
+// the InputError message of opening and reading `path` ("" when none)
+std::string openError(const std::string& path) {
+  try {
+    HistoryReader reader(path);
+    reader.individuals();
+    reader.generations();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), ExitCode::input_file);
+    return e.what();
+  }
+  return "";
+}
+
+TEST(History, RoundTripsAttributesRowsAndGenomeBytes) {
+  std::string path = tempPath("round_trip.h5");
+  writeHistory(path, 3);
+  HistoryReader reader(path);
+  const HistoryAttributes& a = reader.attributes();
+  EXPECT_EQ(a.format_version, kHistoryFormatVersion);
+  EXPECT_EQ(a.cambrian_version, kVersion);
+  EXPECT_EQ(a.git_hash, kGitHash);
+  EXPECT_EQ(a.config_text, "[evolution]\npopulation = 5\n");
+  EXPECT_EQ(a.config_hash, configHash(a.config_text));
+  EXPECT_EQ(a.seed, 42u);
+  EXPECT_EQ(a.rank_count, 3);
+  EXPECT_EQ(a.bullet_precision, "float64");
+  EXPECT_EQ(a.start_time.size(), 20u);
+  EXPECT_EQ(a.start_time.back(), 'Z');
+
+  std::vector<HistoryIndividual> rows = reader.individuals();
+  ASSERT_EQ(rows.size(), 15u);
+  for (int g = 0; g < 3; ++g) {
+    std::vector<HistoryIndividual> expected = makeRows(static_cast<std::uint64_t>(g), 5);
+    for (int i = 0; i < 5; ++i) {
+      const HistoryIndividual& got = rows[static_cast<std::size_t>(g * 5 + i)];
+      const HistoryIndividual& want = expected[static_cast<std::size_t>(i)];
+      EXPECT_EQ(got.generation, want.generation);
+      EXPECT_EQ(got.id, want.id);
+      EXPECT_EQ(got.parent_a, want.parent_a);
+      EXPECT_EQ(got.parent_b, want.parent_b);
+      EXPECT_EQ(got.origin, want.origin);
+      EXPECT_EQ(got.fitness, want.fitness);
+      EXPECT_EQ(got.status, want.status);
+      EXPECT_EQ(got.measures[0], want.measures[0]);
+      EXPECT_TRUE(std::isnan(got.measures[3]));
+      EXPECT_EQ(got.parts, want.parts);
+      EXPECT_EQ(got.joints, want.joints);
+      EXPECT_EQ(got.neurons, want.neurons);
+      EXPECT_EQ(got.steps, want.steps);
+      EXPECT_EQ(got.eval_seconds, want.eval_seconds);
+      EXPECT_EQ(got.worker_rank, want.worker_rank);
+      EXPECT_EQ(got.genome, want.genome);
+    }
+  }
+  EXPECT_EQ(rows[0].parent_a, kNoId);  // absent parents are UINT64_MAX
+
+  std::vector<HistoryGeneration> generations = reader.generations();
+  ASSERT_EQ(generations.size(), 3u);
+  EXPECT_EQ(generations[2].generation, 2u);
+  EXPECT_EQ(generations[2].best, 3.0);
+  EXPECT_EQ(generations[2].best_id, 204u);
+  EXPECT_EQ(generations[1].workers, 2);
+  EXPECT_EQ(generations[1].distinct_genomes, 5u);
+  EXPECT_GT(generations[0].unix_time, 1.6e9);
+
+  EXPECT_EQ(reader.genomeBytes(103), makeRows(1, 5)[3].genome);
+  EXPECT_THROW(reader.genomeBytes(999), InputError);
+}
+
+TEST(History, StoresRealGenomesAndPopulations) {
+  // a random genome through makeHistoryIndividual, the file, and back to a Genome
+  Population population;
+  population.generation = 0;
+  for (std::uint64_t i = 0; i < 3; ++i) {
+    Individual individual;
+    individual.id = i;
+    individual.genome = randomGenome(GenomeLimits{}, 7, 0, i);
+    individual.evaluated = true;
+    individual.outcome.fitness = 1.0 + static_cast<double>(i);
+    individual.outcome.measures = {{"distance", 2.5}, {"unknown", 9}};
+    individual.outcome.parts = 4;
+    population.individuals.push_back(individual);
+  }
+  population.individuals[2].genome = population.individuals[1].genome;
+  std::vector<HistoryIndividual> rows;
+  for (const Individual& individual : population.individuals)
+    rows.push_back(makeHistoryIndividual(individual));
+  EXPECT_EQ(rows[0].measures[0], 2.5);
+  EXPECT_TRUE(std::isnan(rows[0].measures[1]));
+  EXPECT_EQ(rows[0].parent_a, kNoId);
+  GenerationRecord record;
+  record.stats.best = 3;
+  HistoryGeneration generation = makeHistoryGeneration(record, population);
+  EXPECT_EQ(generation.distinct_genomes, 2u);
+
+  std::string path = tempPath("genomes.h5");
+  {
+    HistoryWriter writer(path, makeAttributes());
+    writer.appendGeneration(rows, generation);
+  }
+  HistoryReader reader(path);
+  EXPECT_EQ(serializeGenome(reader.genome(1)), serializeGenome(population.individuals[1].genome));
+  EXPECT_EQ(reader.generations().at(0).best, 3.0);
+}
+
+TEST(History, ReadableWhileTheWriterHoldsItOpen) {
+  std::string path = tempPath("live.h5");
+  HistoryWriter writer(path, makeAttributes());
+  writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
+  {
+    HistoryReader reader(path);
+    EXPECT_EQ(reader.individuals().size(), 5u);
+    EXPECT_EQ(reader.generations().size(), 1u);
+  }
+  writer.appendGeneration(makeRows(1, 5), makeGeneration(1));
+  {
+    HistoryReader reader(path);
+    EXPECT_EQ(reader.individuals().size(), 10u);
+    EXPECT_EQ(reader.generations().size(), 2u);
+    EXPECT_EQ(reader.genomeBytes(104), makeRows(1, 5)[4].genome);
+  }
+  writer.close();
+  EXPECT_THROW(writer.appendGeneration(makeRows(2, 1), makeGeneration(2)), Error);
+}
+
+TEST(History, SurvivesAWriterKilledMidRun) {
+  // a child writes three generations, reports, and is killed without closing the file
+  std::string path = tempPath("killed.h5");
+  int ready[2];
+  ASSERT_EQ(pipe(ready), 0);
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    close(ready[0]);
+    try {
+      auto* writer = new HistoryWriter(path, makeAttributes());
+      for (int g = 0; g < 3; ++g)
+        writer->appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
+    } catch (...) {
+      _exit(3);
+    }
+    char done = 'x';
+    if (write(ready[1], &done, 1) != 1)
+      _exit(4);
+    pause();
+    _exit(5);
+  }
+  close(ready[1]);
+  char done = 0;
+  ASSERT_EQ(read(ready[0], &done, 1), 1);
+  close(ready[0]);
+  kill(child, SIGKILL);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+
+  // everything up to the last flushed generation is there
+  HistoryReader reader(path);
+  EXPECT_EQ(reader.attributes().seed, 42u);
+  EXPECT_EQ(reader.individuals().size(), 15u);
+  ASSERT_EQ(reader.generations().size(), 3u);
+  EXPECT_EQ(reader.generations()[2].best, 3.0);
+  EXPECT_EQ(reader.genomeBytes(202), makeRows(2, 5)[2].genome);
+}
+
+TEST(History, MissingFileIsAnInputErrorNamingIt) {
+  std::string path = tempPath("missing.h5");
+  std::string message = openError(path);
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+  EXPECT_NE(message.find("no such"), std::string::npos) << message;
+}
+
+TEST(History, NonHdf5FileIsAnInputErrorNamingIt) {
+  std::string path = tempPath("text.h5");
+  std::ofstream(path) << "generation\tid\n0\t1\n";
+  std::string message = openError(path);
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+  EXPECT_NE(message.find("not an HDF5 file"), std::string::npos) << message;
+}
+
+TEST(History, TruncatedFileIsAnInputErrorNamingIt) {
+  std::string path = tempPath("truncated.h5");
+  writeHistory(path, 3);
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
+  std::string message = openError(path);
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+  EXPECT_FALSE(message.empty());
+}
+
+TEST(History, CorruptFileIsAnInputErrorNamingIt) {
+  // the signature survives, the rest is noise
+  std::string path = tempPath("corrupt.h5");
+  writeHistory(path, 2);
+  {
+    std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(8);
+    for (int i = 0; i < 4096; ++i)
+      file.put(static_cast<char>((i * 131 + 7) & 0xff));
+  }
+  std::string message = openError(path);
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+}
+
+TEST(History, ForeignHdf5FileIsAnInputErrorNamingIt) {
+  // a valid HDF5 file with a dataset but none of the history's attributes
+  std::string path = tempPath("foreign.h5");
+  hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  hsize_t size = 4;
+  hid_t space = H5Screate_simple(1, &size, nullptr);
+  hid_t dataset =
+      H5Dcreate2(file, "data", H5T_NATIVE_INT, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  int values[4] = {1, 2, 3, 4};
+  H5Dwrite(dataset, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values);
+  H5Dclose(dataset);
+  H5Sclose(space);
+  H5Fclose(file);
+  std::string message = openError(path);
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+  EXPECT_NE(message.find("not a cambrian history"), std::string::npos) << message;
+}
+
+TEST(History, UnwritablePathIsAnOutputError) {
+  try {
+    HistoryWriter writer("/nonexistent-dir/history.h5", makeAttributes());
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::output_file);
+    EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/history.h5"), std::string::npos);
+  }
+}
+
+TEST(History, ConfigHashIsStable) {
+  EXPECT_EQ(configHash(""), "cbf29ce484222325");
+  EXPECT_NE(configHash("[run]\nseed = 1\n"), configHash("[run]\nseed = 2\n"));
+}
+
+}  // namespace
+}  // namespace cambrian
