@@ -192,24 +192,56 @@ TEST(History, StoresRealGenomesAndPopulations) {
   EXPECT_EQ(reader.generations().at(0).best, 3.0);
 }
 
-TEST(History, ReadableWhileTheWriterHoldsItOpen) {
+TEST(History, ReadableByAnotherProcessWhileTheWriterHoldsItOpen) {
+  // a child process writes generation by generation, waiting for the parent to read each one
   std::string path = tempPath("live.h5");
-  HistoryWriter writer(path, makeAttributes());
-  writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
-  {
-    HistoryReader reader(path);
-    EXPECT_EQ(reader.individuals().size(), 5u);
-    EXPECT_EQ(reader.generations().size(), 1u);
+  int to_parent[2], to_child[2];
+  ASSERT_EQ(pipe(to_parent), 0);
+  ASSERT_EQ(pipe(to_child), 0);
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    close(to_parent[0]);
+    close(to_child[1]);
+    char token = 'x';
+    try {
+      HistoryWriter writer(path, makeAttributes());
+      for (int g = 0; g < 2; ++g) {
+        writer.appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
+        if (write(to_parent[1], &token, 1) != 1 || read(to_child[0], &token, 1) != 1)
+          _exit(4);
+      }
+      writer.close();
+      bool closed = false;
+      try {
+        writer.appendGeneration(makeRows(2, 1), makeGeneration(2));
+      } catch (const Error&) {
+        closed = true;
+      }
+      _exit(closed ? 0 : 6);
+    } catch (...) {
+      _exit(3);
+    }
   }
-  writer.appendGeneration(makeRows(1, 5), makeGeneration(1));
-  {
-    HistoryReader reader(path);
-    EXPECT_EQ(reader.individuals().size(), 10u);
-    EXPECT_EQ(reader.generations().size(), 2u);
-    EXPECT_EQ(reader.genomeBytes(104), makeRows(1, 5)[4].genome);
+  close(to_parent[1]);
+  close(to_child[0]);
+  char token = 0;
+  for (std::size_t g = 1; g <= 2; ++g) {
+    ASSERT_EQ(read(to_parent[0], &token, 1), 1);
+    {
+      HistoryReader reader(path);
+      EXPECT_EQ(reader.individuals().size(), 5 * g);
+      EXPECT_EQ(reader.generations().size(), g);
+      EXPECT_EQ(reader.genomeBytes((g - 1) * 100 + 4), makeRows(g - 1, 5)[4].genome);
+    }
+    ASSERT_EQ(write(to_child[1], &token, 1), 1);
   }
-  writer.close();
-  EXPECT_THROW(writer.appendGeneration(makeRows(2, 1), makeGeneration(2)), Error);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  close(to_parent[0]);
+  close(to_child[1]);
+  EXPECT_EQ(HistoryReader(path).generations().size(), 2u);
 }
 
 TEST(History, SurvivesAWriterKilledMidRun) {
@@ -316,6 +348,25 @@ TEST(History, UnwritablePathIsAnOutputError) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::output_file);
     EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/history.h5"), std::string::npos);
+  }
+}
+
+TEST(History, FreshFileHasNoRowsAndBadGenomeBytesNameTheFile) {
+  std::string path = tempPath("empty.h5");
+  HistoryWriter writer(path, makeAttributes());
+  {
+    HistoryReader reader(path);
+    EXPECT_TRUE(reader.individuals().empty());
+    EXPECT_TRUE(reader.generations().empty());
+  }
+  writer.appendGeneration(makeRows(0, 2), makeGeneration(0));
+  HistoryReader reader(path);
+  try {
+    reader.genome(1);  // the test rows hold filler bytes, not a serialized genome
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("individual 1"), std::string::npos) << e.what();
   }
 }
 
