@@ -100,7 +100,7 @@ po::options_description evolutionOptions(EvolveSettings& s) {
   run.add_options()("run.seed", po::value(&e.seed)->default_value(e.seed),
                     "run seed (same seed, same run)")(
       "run.out", po::value(&s.run.out_dir)->default_value(s.run.out_dir),
-      "output directory (individuals.tsv, generations.tsv)")(
+      "output directory (history.h5, individuals.tsv, generations.tsv)")(
       "run.quiet", po::value(&s.run.quiet)->default_value(s.run.quiet),
       "no progress lines, only the digest")("run.verbose",
                                             po::value(&s.run.verbose)->default_value(s.run.verbose),
