@@ -12,9 +12,11 @@ namespace cambrian {
 
 /// The physical world an evaluation runs in. Units: SI.
 struct PhysicsSettings {
-  double time_step = 1.0 / 240.0;  ///< s, fixed
-  double gravity = 9.81;           ///< m / s^2, pointing down (-z)
-  double ground_friction = 1.0;    ///< Coulomb coefficient
+  double time_step = 1.0 / 240.0;  ///< s, fixed: sensors, brain and monitors run at this rate
+  int substeps = 2;       ///< Bullet steps per time step; 1 lets thin, light, strongly driven parts
+                          ///< gain energy from the integrator at 1/240 s
+  double gravity = 9.81;  ///< m / s^2, pointing down (-z)
+  double ground_friction = 1.0;  ///< Coulomb coefficient
   double restitution = 0.0;
   double joint_damping = 0.05;      ///< N m s / rad, passive damping on every joint
   double strength_per_area = 2000;  ///< N m of torque per m^2 of the smaller cross-section

@@ -161,6 +161,8 @@ void finishCreatureSettings(CreatureSettings& s) {
   const PhysicsSettings& p = s.physics;
   require(p.time_step > 0 && p.time_step <= 0.1, "physics.time_step", p.time_step,
           "must be in (0, 0.1] s");
+  require(p.substeps >= 1 && p.substeps <= 100, "physics.substeps", p.substeps,
+          "must be in 1..100");
   require(p.gravity >= 0 && std::isfinite(p.gravity), "physics.gravity", p.gravity, "must be >= 0");
   require(p.ground_friction >= 0 && std::isfinite(p.ground_friction), "physics.ground_friction",
           p.ground_friction, "must be >= 0");

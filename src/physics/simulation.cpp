@@ -374,14 +374,18 @@ void Simulation::step(bool brain_on) {
   if (status_ != EvalStatus::ok)
     return;
 
-  // sense, think, act
+  // sense, think
   readSensors();
   if (brain_on)
     brain_.step();
-  applyTorques(brain_on);
 
-  // one fixed step (maxSubSteps = 0: exactly one internal step of time_step)
-  bullet_->world.stepSimulation(settings_.time_step, 0);
+  // act through `substeps` equal Bullet steps (maxSubSteps = 0: exactly one internal step
+  // each); Bullet clears applied torques after every internal step, so they are re-applied
+  const double substep = settings_.time_step / settings_.substeps;
+  for (int k = 0; k < settings_.substeps; ++k) {
+    applyTorques(brain_on);
+    bullet_->world.stepSimulation(substep, 0);
+  }
   ++steps_;
   monitor();
 }
