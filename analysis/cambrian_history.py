@@ -130,3 +130,94 @@ def load(path):
     """(attributes, individuals, generations) of a history file, read in one go."""
     with History(path) as history:
         return history.attributes, history.individuals(), history.generations()
+
+
+# --- helpers shared by the analysis scripts (lineage, improvements, diversity, load balance,
+# scaling); additions only, the reader above is unchanged ---
+
+EXIT_OK = 0  # success
+EXIT_USAGE = 2  # bad command line (argparse's own code)
+EXIT_INPUT = 4  # a history file is missing, not HDF5, foreign or empty (docs/exit-codes.md)
+
+
+class InputFileError(Exception):
+    """A history opened fine but cannot be analysed (no rows, a missing parent, ...)."""
+
+
+def worker_count(attributes, generations=None):
+    """Evaluating ranks of a run: the `workers` column when present, else rank_count - 1
+    (a one-rank run evaluates in process: one worker)."""
+    if generations is not None and len(generations.get("workers", [])) > 0:
+        return int(generations["workers"][0])
+    ranks = int(attributes.get("rank_count", 1))
+    return max(ranks - 1, 1)
+
+
+def config_value(attributes, section, key, default=None):
+    """A value from the root attribute config_text (INI text), as str; default when absent."""
+    current = None
+    for line in str(attributes.get("config_text", "")).splitlines():
+        line = line.strip()
+        if line.startswith("[") and line.endswith("]"):
+            current = line[1:-1].strip()
+        elif current == section and "=" in line:
+            name, value = line.split("=", 1)
+            if name.strip() == key:
+                return value.strip()
+    return default
+
+
+def operator_labels(history, table):
+    """The operator of every row of an individuals table, as a numpy array of str."""
+    names = np.array(history.operator_names(), dtype=object)
+    return names[table["operator"].astype(np.int64)]
+
+
+def first_rows(table):
+    """dict id -> row index of the first row holding that id (the row where it was evaluated:
+    elite copies that repeat an id come later)."""
+    ids = table["id"]
+    unique, first = np.unique(ids, return_index=True)
+    return dict(zip(unique.tolist(), first.tolist()))
+
+
+def genome_stream(history):
+    """The whole concatenated genome byte stream as a numpy uint8 array (one read)."""
+    stream = history.file["individuals/genome_bytes"]
+    stream.refresh()
+    return stream[:]
+
+
+def genome_of(stream, table, row):
+    """The genome bytes of one row, cut from a stream read by genome_stream()."""
+    offset, size = int(table["genome_offset"][row]), int(table["genome_size"][row])
+    return bytes(stream[offset : offset + size])
+
+
+def genome_node_count(genome):
+    """Node count of a serialized genome (u32 after the magic and the version); -1 if too short."""
+    if len(genome) < 12 or genome[:4] != b"CMBG":
+        return -1
+    return int.from_bytes(genome[8:12], "little")
+
+
+def open_or_exit(path, program):
+    """(attributes, individuals, generations, operator labels, status names) of a history, or
+    the script's exit with EXIT_INPUT and an error naming the file."""
+    import sys
+
+    try:
+        with History(path) as history:
+            individuals = history.individuals()
+            generations = history.generations()
+            labels = operator_labels(history, individuals)
+            statuses = history.status_names()
+            attributes = history.attributes
+    except (HistoryError, KeyError, OSError) as error:
+        print(f"{program}: error: {path}: {error}" if str(path) not in str(error)
+              else f"{program}: error: {error}", file=sys.stderr)
+        raise SystemExit(EXIT_INPUT)
+    if len(individuals["id"]) == 0 or len(generations["generation"]) == 0:
+        print(f"{program}: error: {path}: no generations written yet", file=sys.stderr)
+        raise SystemExit(EXIT_INPUT)
+    return attributes, individuals, generations, labels, statuses
