@@ -1,0 +1,314 @@
+#!/usr/bin/env python3
+"""A discrete-event model of one cambrian generation under MPI, to project scaling beyond the
+machines we can measure on.
+
+The model (docs/scaling.md):
+- rank 0 holds E evaluations of cost c_1 >= c_2 >= ... (largest first, as MpiScheduler sends
+  them) and W workers; it hands out one evaluation at a time, and each hand-out occupies rank 0
+  for the message latency L (so hand-outs are serial on rank 0);
+- first every worker gets one evaluation; then each worker that finishes asks for the next one
+  and rank 0 serves the requests in the order they arrive (self-scheduling);
+- the generation ends when the last evaluation is done (the barrier), and rank 0 then spends
+  its serial time S0 (breeding, statistics, records) before the next one:
+      T(W) = S0 + span(W);   speedup S(W) = T(1) / T(W);   efficiency S(W) / W.
+
+Calibration, from a history (--history) or from parameters:
+- per-evaluation costs: the empirical distribution of eval_seconds (evaluated rows only),
+  resampled with replacement, or lognormal with --cost-mean and --cost-cv;
+- S0: median rank0_serial_seconds over generations >= 1;
+- L: the measured evaluation span of each generation minus the span this model gives with
+  L = 0 for that generation's own costs, divided by the hand-outs per worker (E / W); median
+  over generations. It lumps together the message latency and rank 0's wake-up delay;
+- the share of the population evaluated per generation (elites are not): evaluations / count.
+
+Projects speedup and efficiency for populations --populations (default 100 300 1000) and worker
+counts 1, 2, 4, ... --max-workers (default 1024), naming for each point what bounds the
+generation time: `work` (total cost / W), `dispatch` (rank 0 handing out E evaluations, E·L),
+`barrier` (the slowest creature: P/W evaluations per worker reached 1), or `serial` (S0).
+With --sweep, compares the model with the measured points of a sweep (model vs measured).
+
+    python3 analysis/scaling_model.py --history runs/scaling/s/w1/r1/history.h5 --output model.png
+    python3 analysis/scaling_model.py --cost-mean 0.01 --serial 0.002 --latency 1e-4 --output model.png
+    python3 analysis/scaling_model.py --history h.h5 --sweep runs/scaling/s --output model.png
+
+Exit codes: 0 ok, 2 usage, 4 bad input file.
+"""
+
+import argparse
+import heapq
+import os
+import sys
+
+import numpy as np
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cambrian_history as ch  # noqa: E402
+import scaling  # noqa: E402
+
+PROGRAM = "scaling_model"
+LIMITS = ("work", "dispatch", "barrier", "serial")
+MARKERS = {"work": "o", "dispatch": "s", "barrier": "^", "serial": "D"}
+
+
+def parse_arguments(argv):
+    parser = argparse.ArgumentParser(
+        description="Discrete-event model of a cambrian generation (self-scheduling, largest "
+        "first, one latency per hand-out, rank 0 serial time, generation barrier), calibrated "
+        "from a history or from parameters; projects speedup and efficiency to --max-workers "
+        "and compares with a measured sweep.",
+        epilog="exit codes: 0 ok, 2 usage, 4 bad input file",
+    )
+    parser.add_argument("--history", default=None, help="calibrate from this history.h5")
+    parser.add_argument("--sweep", nargs="*", default=None,
+                        help="sweep directories or histories to compare with (and to calibrate from, "
+                        "the run with the fewest workers, when --history is not given)")
+    parser.add_argument("--cost-mean", type=float, default=None, help="mean evaluation cost, s (instead of the history's)")
+    parser.add_argument("--cost-cv", type=float, default=0.0, help="coefficient of variation of the lognormal cost (default 0)")
+    parser.add_argument("--serial", type=float, default=None, help="rank 0 serial seconds per generation")
+    parser.add_argument("--latency", type=float, default=None, help="seconds of rank 0 per hand-out")
+    parser.add_argument("--evaluated-share", type=float, default=None,
+                        help="share of the population evaluated per generation (default: from the history, else 0.8)")
+    parser.add_argument("--populations", type=int, nargs="+", default=[100, 300, 1000], help="populations to project (default 100 300 1000)")
+    parser.add_argument("--max-workers", type=int, default=1024, help="largest worker count, powers of 2 up to it (default 1024)")
+    parser.add_argument("--samples", type=int, default=5, help="simulated generations per point, averaged (default 5)")
+    parser.add_argument("--skip", type=int, default=1, help="generations left out of the calibration and the sweep (default 1)")
+    parser.add_argument("--seed", type=int, default=1, help="seed of the cost resampling (default 1)")
+    parser.add_argument("-o", "--output", default="scaling_model.png", help="PNG to write (default: scaling_model.png)")
+    parser.add_argument("--table", default=None, help="also write the projection table to this TSV file")
+    parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNG (default: 120)")
+    arguments = parser.parse_args(argv)
+    if arguments.history is None and not arguments.sweep and arguments.cost_mean is None:
+        parser.error("give --history, --sweep or --cost-mean")
+    for name in ("cost_mean", "serial", "latency"):
+        value = getattr(arguments, name)
+        if value is not None and value < 0:
+            parser.error(f"--{name.replace('_', '-')} must be >= 0")
+    if arguments.max_workers < 1 or arguments.samples < 1 or arguments.cost_cv < 0:
+        parser.error("--max-workers and --samples must be >= 1, --cost-cv >= 0")
+    return arguments
+
+
+def simulate_span(costs, workers, latency):
+    """Evaluation span of one generation: costs handed out largest first, one at a time, each
+    hand-out taking `latency` of rank 0; a finished worker gets the next evaluation."""
+    order = np.sort(np.asarray(costs, dtype=float))[::-1]
+    if len(order) == 0:
+        return 0.0
+    rank0_free = 0.0
+    finishes = []
+    # the first round: one evaluation per worker
+    first = min(workers, len(order))
+    for k in range(first):
+        rank0_free += latency
+        heapq.heappush(finishes, rank0_free + order[k])
+    # every finish asks for the next evaluation, served in arrival order
+    span = 0.0
+    for k in range(first, len(order)):
+        done = heapq.heappop(finishes)
+        span = max(span, done)
+        rank0_free = max(rank0_free, done) + latency
+        heapq.heappush(finishes, rank0_free + order[k])
+    return max(span, max(finishes))
+
+
+def generation_time(costs, workers, latency, serial):
+    """T(W) = rank 0 serial time + evaluation span."""
+    return serial + simulate_span(costs, workers, latency)
+
+
+def limit_of(costs, workers, latency, serial):
+    """What bounds the generation: the largest of total cost / W, E·L, the slowest creature, S0."""
+    bounds = {"work": float(np.sum(costs)) / workers, "dispatch": len(costs) * latency,
+              "barrier": float(np.max(costs)) if len(costs) else 0.0, "serial": serial}
+    if bounds["barrier"] < bounds["work"] and workers < len(costs):
+        bounds["barrier"] = 0.0  # several evaluations per worker: the tail is not the bound
+    return max(LIMITS, key=lambda k: bounds[k])
+
+
+class Calibration:
+    """Per-evaluation costs (a sampler), serial seconds, latency and evaluated share."""
+
+    def __init__(self, costs=None, cost_mean=None, cost_cv=0.0, serial=0.0, latency=0.0, evaluated_share=0.8,
+                 source="parameters"):
+        self.costs = None if costs is None else np.asarray(costs, dtype=float)
+        self.cost_mean, self.cost_cv = cost_mean, cost_cv
+        self.serial, self.latency, self.evaluated_share, self.source = serial, latency, evaluated_share, source
+
+    def draw(self, count, rng):
+        """`count` evaluation costs: resampled from the history, or lognormal (or constant)."""
+        if self.costs is not None and self.cost_mean is None:
+            return rng.choice(self.costs, size=count, replace=True)
+        if self.cost_cv == 0:
+            return np.full(count, self.cost_mean)
+        sigma2 = np.log(1.0 + self.cost_cv ** 2)
+        return rng.lognormal(np.log(self.cost_mean) - sigma2 / 2.0, np.sqrt(sigma2), size=count)
+
+    def describe(self):
+        mean = self.cost_mean if self.cost_mean is not None else float(np.mean(self.costs))
+        return (f"calibration ({self.source}): mean cost {mean:.6g} s, rank 0 serial {self.serial:.6g} s, "
+                f"latency {self.latency:.6g} s per hand-out, evaluated share {self.evaluated_share:.3f}")
+
+
+def calibrate(path, skip=1):
+    """A Calibration from one history: costs, S0, inferred latency, evaluated share."""
+    with ch.History(path) as history:
+        t = history.individuals()
+        g = history.generations()
+    evaluated = t["worker_rank"] >= 0
+    costs = t["eval_seconds"][evaluated]
+    if len(costs) == 0 or len(g["generation"]) == 0:
+        raise ch.InputFileError(f"{path}: no evaluated individuals")
+    later = g["generation"] >= skip if np.any(g["generation"] >= skip) else np.ones(len(g["generation"]), bool)
+    serial = float(np.median(g["rank0_serial_seconds"][later]))
+    share = float(np.median(g["evaluations"][later] / g["count"][later]))
+    # latency: measured span beyond the zero-latency model span, per hand-out per worker
+    estimates = []
+    for i, generation in enumerate(g["generation"]):
+        if not later[i]:
+            continue
+        mine = (t["generation"] == generation) & evaluated
+        workers = int(g["workers"][i])
+        count = int(mine.sum())
+        if count == 0 or workers < 1:
+            continue
+        excess = float(g["evaluation_span_seconds"][i]) - simulate_span(t["eval_seconds"][mine], workers, 0.0)
+        estimates.append(max(0.0, excess) / max(1.0, count / workers))
+    latency = float(np.median(estimates)) if estimates else 0.0
+    return Calibration(costs=costs, serial=serial, latency=latency, evaluated_share=share, source=path)
+
+
+def project(calibration, populations, worker_counts, samples=5, seed=1):
+    """Rows (dicts) population, workers, evaluations, time, speedup, efficiency, limit."""
+    rows = []
+    for population in populations:
+        rng = np.random.default_rng([seed, population])
+        count = max(1, int(round(population * calibration.evaluated_share)))
+        draws = [calibration.draw(count, rng) for _ in range(samples)]
+        base = np.mean([generation_time(c, 1, calibration.latency, calibration.serial) for c in draws])
+        for workers in worker_counts:
+            time = np.mean([generation_time(c, workers, calibration.latency, calibration.serial) for c in draws])
+            limits = [limit_of(c, workers, calibration.latency, calibration.serial) for c in draws]
+            speedup = base / time
+            rows.append({"population": population, "workers": workers, "evaluations": count,
+                         "time": float(time), "speedup": float(speedup), "efficiency": float(speedup / workers),
+                         "limit": max(set(limits), key=limits.count)})
+    return rows
+
+
+def compare(calibration, runs, samples=5, seed=1):
+    """Model against every measured point of a sweep: list of dicts per worker count."""
+    rows, _, _ = scaling.points(runs, "strong")
+    evaluations = {}
+    for run in runs:
+        evaluations.setdefault(run["workers"], []).append(run["evaluations"])
+    rng = np.random.default_rng(seed)
+    out = []
+    for row in rows:
+        count = max(1, int(round(np.median(evaluations[row["workers"]]))))
+        draws = [calibration.draw(count, rng) for _ in range(samples)]
+        model = float(np.mean([generation_time(c, row["workers"], calibration.latency, calibration.serial) for c in draws]))
+        out.append({"workers": row["workers"], "measured": row["time_median"], "model": model,
+                    "measured_speedup": row["speedup"]})
+    base = out[0]["model"] * out[0]["workers"] if out else 1.0
+    for o in out:
+        o["model_speedup"] = base / o["model"]
+        o["error"] = (o["model"] - o["measured"]) / o["measured"]
+    return out
+
+
+def plot(rows, measured, output, title, dpi):
+    """Speedup and efficiency against workers per population, markers naming the bound."""
+    figure, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for i, population in enumerate(sorted({r["population"] for r in rows})):
+        mine = [r for r in rows if r["population"] == population]
+        w = [r["workers"] for r in mine]
+        colour = colours[i % len(colours)]
+        axes[0].plot(w, [r["speedup"] for r in mine], color=colour, label=f"P = {population}")
+        axes[1].plot(w, [r["efficiency"] for r in mine], color=colour)
+        # one marker per bound
+        for r in mine:
+            for a, key in ((axes[0], "speedup"), (axes[1], "efficiency")):
+                a.scatter(r["workers"], r[key], color=colour, marker=MARKERS[r["limit"]], s=28, zorder=3)
+    top = max(r["workers"] for r in rows)
+    axes[0].plot([1, top], [1, top], color="0.5", linestyle=":", label="ideal")
+    if measured:
+        axes[0].scatter([m["workers"] for m in measured], [m["measured_speedup"] for m in measured],
+                        color="black", marker="x", s=60, zorder=4, label="measured")
+    for limit, marker in MARKERS.items():
+        axes[1].scatter([], [], color="0.3", marker=marker, label=f"bound: {limit}")
+    axes[0].set_xscale("log", base=2)
+    axes[0].set_yscale("log", base=2)
+    axes[0].set_ylabel("speedup vs 1 worker")
+    axes[1].set_xscale("log", base=2)
+    axes[1].set_ylim(0, 1.05)
+    axes[1].set_ylabel("efficiency")
+    for a in axes:
+        a.set_xlabel("workers")
+        a.grid(alpha=0.3, which="both")
+        a.legend(fontsize="small")
+    figure.suptitle(title)
+    figure.tight_layout()
+    figure.savefig(output, dpi=dpi)
+    plt.close(figure)
+
+
+def main(argv=None):
+    arguments = parse_arguments(sys.argv[1:] if argv is None else argv)
+    # calibration: a history, the sweep's smallest run, or parameters
+    runs = None
+    try:
+        if arguments.sweep:
+            runs = scaling.load_sweep(arguments.sweep, arguments.skip)
+        if arguments.history:
+            calibration = calibrate(arguments.history, arguments.skip)
+        elif runs:
+            calibration = calibrate(min(runs, key=lambda r: (r["workers"], r["path"]))["path"], arguments.skip)
+        else:
+            calibration = Calibration(cost_mean=arguments.cost_mean, cost_cv=arguments.cost_cv)
+    except (ch.HistoryError, ch.InputFileError, KeyError, OSError) as error:
+        print(f"{PROGRAM}: error: {error}", file=sys.stderr)
+        return ch.EXIT_INPUT
+    # parameters override what the history says
+    if arguments.cost_mean is not None:
+        calibration.cost_mean, calibration.cost_cv = arguments.cost_mean, arguments.cost_cv
+    for name in ("serial", "latency", "evaluated_share"):
+        if getattr(arguments, name) is not None:
+            setattr(calibration, name, getattr(arguments, name))
+    print(f"# {calibration.describe()}")
+    # projection
+    worker_counts = [2 ** k for k in range(int(np.log2(arguments.max_workers)) + 1)]
+    rows = project(calibration, arguments.populations, worker_counts, arguments.samples, arguments.seed)
+    lines = ["population\tworkers\tevaluations\tgeneration_seconds\tspeedup\tefficiency\tlimit"]
+    lines += [f"{r['population']}\t{r['workers']}\t{r['evaluations']}\t{r['time']:.6g}\t{r['speedup']:.4g}\t"
+              f"{r['efficiency']:.4f}\t{r['limit']}" for r in rows]
+    print("\n".join(lines))
+    if arguments.table:
+        with open(arguments.table, "w") as handle:
+            handle.write("\n".join(lines) + "\n")
+    # where efficiency falls below one half
+    for population in arguments.populations:
+        below = [r for r in rows if r["population"] == population and r["efficiency"] < 0.5]
+        where = f"{below[0]['workers']} workers (bound: {below[0]['limit']})" if below else f"not within {arguments.max_workers} workers"
+        print(f"# P = {population}: efficiency below 50 % from {where}")
+    # model against the measured sweep
+    measured = None
+    if runs:
+        measured = compare(calibration, runs, arguments.samples, arguments.seed)
+        print("# model vs measured (median generation seconds, generations >= skip)")
+        print("workers\tmeasured_seconds\tmodel_seconds\trelative_error\tmeasured_speedup\tmodel_speedup")
+        for m in measured:
+            print(f"{m['workers']}\t{m['measured']:.6g}\t{m['model']:.6g}\t{m['error']:+.3f}\t"
+                  f"{m['measured_speedup']:.4g}\t{m['model_speedup']:.4g}")
+    plot(rows, measured, arguments.output, "scaling model: " + os.path.basename(calibration.source), arguments.dpi)
+    print(f"# wrote {arguments.output}")
+    return ch.EXIT_OK
+
+
+if __name__ == "__main__":
+    sys.exit(main())
