@@ -86,9 +86,13 @@ def classify(individuals, labels, statuses, genomes=None):
     return out
 
 
-def points_of_improvement(individuals, labels):
+def points_of_improvement(individuals, labels, classes=None):
     """Generations whose best beats every earlier generation: list of dicts (generation, id,
-    operator, fitness, previous champion, gain)."""
+    operator, fitness, previous champion, gain). With `classes` (from classify) the operator
+    is the classified label, e.g. `crossover (same parents)`."""
+    labels = np.array(labels, dtype=object)
+    for row, label, _, _ in classes or ():
+        labels[row] = label
     generation = individuals["generation"]
     fitness = individuals["fitness"]
     points = []
@@ -178,7 +182,7 @@ def main(argv=None):
     with ch.History(arguments.history) as history:
         stream = ch.genome_stream(history)
     classes = classify(individuals, labels, statuses, lambda row: ch.genome_of(stream, individuals, row))
-    points = points_of_improvement(individuals, labels)
+    points = points_of_improvement(individuals, labels, classes)
     summary = summarise(classes, points, individuals)
     # windows of generations
     last = int(individuals["generation"].max())
