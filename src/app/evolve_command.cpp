@@ -10,6 +10,8 @@
 #include "parallel/evolution_run.hpp"
 #include "parallel/mpi_context.hpp"
 #include "parallel/scheduler.hpp"
+#include "parallel/stop_request.hpp"
+#include "parallel/test_kill.hpp"
 #include "parallel/worker.hpp"
 
 #include <charconv>
@@ -106,11 +108,37 @@ po::options_description evolutionOptions(EvolveSettings& s) {
                                             po::value(&s.run.verbose)->default_value(s.run.verbose),
                                             "timing details after each progress line")(
       "run.fail_every", po::value(&s.fail_every)->default_value(s.fail_every),
-      "testing: workers fail every creature whose id is a multiple of this (0 = never)");
+      "testing: workers fail every creature whose id is a multiple of this (0 = never)")(
+      "run.checkpoint_every",
+      po::value(&s.run.checkpoint_every)->default_value(s.run.checkpoint_every),
+      "write DIR/checkpoint.h5 every this many generations (0 = no generation cadence; a "
+      "checkpoint always follows the last generation and precedes a clean stop)")(
+      "run.checkpoint_minutes",
+      po::value(&s.run.checkpoint_minutes)->default_value(s.run.checkpoint_minutes),
+      "... or when this many minutes passed since the last one, whichever comes first (0 = off)")(
+      "run.max_hours", po::value(&s.run.max_hours)->default_value(s.run.max_hours),
+      "stop cleanly (checkpoint, exit 0) before this many hours of wall time: no generation "
+      "starts that the measured times say would not end in time (0 = no limit)")(
+      "run.test_kill_at", po::value(&s.run.test_kill_at)->default_value(s.run.test_kill_at),
+      "testing: rank 0 SIGKILLs itself at POINT:GENERATION, POINT one of evaluation, history, "
+      "checkpoint_write, checkpoint_rename, checkpoint_done");
 
   po::options_description all("Evolution settings (INI sections [evolution], [run])");
   all.add(evolution).add(run);
   return all;
+}
+
+// the checkpoint and time-limit keys; throws ConfigError naming the key and value
+void checkRunSettings(const RunSettings& run) {
+  if (run.checkpoint_every < 0)
+    throw ConfigError("run.checkpoint_every = " + std::to_string(run.checkpoint_every) +
+                      ": must be >= 0");
+  if (!(run.checkpoint_minutes >= 0))
+    throw ConfigError("run.checkpoint_minutes = " + std::to_string(run.checkpoint_minutes) +
+                      ": must be >= 0");
+  if (!(run.max_hours >= 0))
+    throw ConfigError("run.max_hours = " + std::to_string(run.max_hours) + ": must be >= 0");
+  setTestKillPoint(run.test_kill_at);
 }
 
 // splits "a.txt b.txt,c.txt" lists into single paths
@@ -197,14 +225,18 @@ Setup parse(int argc, char** argv, bool read_seeds) {
   std::string config_path;
   std::uint64_t seed = 0;
   std::string out;
-  bool quiet = false, verbose = false;
+  bool quiet = false, verbose = false, fresh = false;
+  double max_hours = 0;
   po::options_description cli("Command line");
   cli.add_options()("help,h", "print this help")("config,c", po::value(&config_path),
                                                  "experiment file (INI)")("seed", po::value(&seed),
                                                                           "short for --run.seed")(
       "out,o", po::value(&out), "short for --run.out")("quiet,q", po::bool_switch(&quiet),
                                                        "short for --run.quiet true")(
-      "verbose,v", po::bool_switch(&verbose), "short for --run.verbose true");
+      "verbose,v", po::bool_switch(&verbose), "short for --run.verbose true")(
+      "max-hours", po::value(&max_hours), "short for --run.max_hours")(
+      "fresh", po::bool_switch(&fresh),
+      "start over even when DIR holds a checkpoint (removes it, overwrites history.h5)");
 
   po::variables_map vm;
   try {
@@ -221,7 +253,13 @@ Setup parse(int argc, char** argv, bool read_seeds) {
          << "the run goes on: provenance attributes, /individuals with genome bytes,\n"
          << "/generations; schema in docs/hdf5-schema.md, Python reader in\n"
          << "analysis/cambrian_history.py) and DIR/individuals.tsv, DIR/generations.tsv at the\n"
-         << "end.\n\n"
+         << "end.\n"
+         << "Checkpoints: DIR/checkpoint.h5 (atomic, previous kept as checkpoint.prev.h5) every\n"
+         << "run.checkpoint_every generations or run.checkpoint_minutes minutes. Running the same\n"
+         << "command again continues from it exactly (raise evolution.generations to extend a\n"
+         << "finished run; the rank count may differ); --fresh starts over. SIGUSR1 or SIGTERM\n"
+         << "(use SIGUSR1 under mpirun) and --max-hours stop cleanly after a generation with a\n"
+         << "checkpoint and exit 0. Details in docs/checkpoints.md.\n\n"
          << cli << "\n"
          << settings;
     setup.help = true;
@@ -238,6 +276,9 @@ Setup parse(int argc, char** argv, bool read_seeds) {
     s.run.quiet = true;
   if (verbose)
     s.run.verbose = true;
+  if (vm.count("max-hours"))
+    s.run.max_hours = max_hours;
+  s.run.fresh = fresh;
   s.run.config_text = configText(settings, vm);
 
   // words to enums and range checks, naming the file
@@ -247,6 +288,7 @@ Setup parse(int argc, char** argv, bool read_seeds) {
     s.evolution.selection.method = selectionMethodFromName(s.selection_name);
     s.evolution.seed_genomes = splitList(s.seed_genomes);
     validateEvolutionSettings(s.evolution);
+    checkRunSettings(s.run);
   } catch (const ConfigError& e) {
     throw ConfigError(where + e.what());
   }
@@ -269,6 +311,9 @@ Setup parse(int argc, char** argv, bool read_seeds) {
 }  // namespace
 
 int runEvolve(int argc, char** argv) {
+  // SIGTERM / SIGUSR1 (first, so an early one ends nothing): rank 0 stops cleanly after the
+  // generation, workers carry on until rank 0 tells them to stop
+  installStopSignals();
   MpiContext mpi(&argc, &argv);
   bool root = mpi.rank() == 0;
 
@@ -326,6 +371,8 @@ int runEvolve(int argc, char** argv) {
     // Chaumont 5.5: new bodies that overlap themselves are redrawn before evaluation
     RunSettings run = s.run;
     run.rank_count = mpi.size();
+    run.stop_requested = stopRequested;
+    run.stop_reason = stopSignalName;
     if (s.creature.task.kind != TaskKind::synthetic) {
       run.viable = [&s](const Genome& genome) {
         return isViable(genome, s.creature.limits, s.creature.physics);
@@ -336,8 +383,8 @@ int runEvolve(int argc, char** argv) {
     if (scheduler)
       scheduler->stopWorkers();
 
-    // the run digest and rank 0's cost
-    std::cout << "digest " << result.digest << "\n"
+    // the run digest (so far, when stopped) and rank 0's cost
+    std::cout << (result.stopped ? "digest_so_far " : "digest ") << result.digest << "\n"
               << "rank0_cpu_seconds " << result.rank0_cpu_seconds << "\n"
               << "wall_seconds " << result.wall_seconds << "\n"
               << "history " << s.run.out_dir << "/history.h5\n"

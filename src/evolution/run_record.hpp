@@ -51,6 +51,10 @@ struct GenerationRecord {
 /// order. Equal digests mean the same run, whatever the rank count.
 class RunDigest {
  public:
+  /// A digest over nothing yet.
+  RunDigest() = default;
+  /// A digest that continues from `value` (a value() saved in a checkpoint).
+  explicit RunDigest(std::uint64_t value) : hash_(value) {}
   /// Adds the individuals of a generation (in their id order; ids must increase across calls).
   void add(const Population& population);
   /// Adds one individual.

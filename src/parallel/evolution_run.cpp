@@ -5,12 +5,16 @@
 #include "evolution/breeder.hpp"
 #include "evolution/statistics.hpp"
 #include "parallel/mpi_context.hpp"
+#include "parallel/test_kill.hpp"
+#include "store/checkpoint.hpp"
 #include "store/history.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <ostream>
 
 namespace cambrian {
@@ -43,17 +47,56 @@ void makeOutputDirectory(const std::string& dir) {
     throw Error(ExitCode::output_file, dir + ": cannot create directory: " + error.message());
 }
 
-// DIR/history.h5 with the run's provenance, or none when the run keeps no history
-std::unique_ptr<HistoryWriter> openHistory(const EvolutionSettings& settings,
-                                           const RunSettings& run) {
-  if (!run.history)
-    return nullptr;
-  makeOutputDirectory(run.out_dir);
+// the provenance of the run's history (the config hash leaves out run-only settings)
+HistoryAttributes historyAttributes(const EvolutionSettings& settings, const RunSettings& run) {
   HistoryAttributes attributes;
   attributes.config_text = run.config_text;
+  attributes.config_hash = resultConfigHash(run.config_text);
   attributes.seed = settings.seed;
   attributes.rank_count = run.rank_count;
-  return std::make_unique<HistoryWriter>(run.out_dir + "/history.h5", attributes);
+  return attributes;
+}
+
+// the table record of a history row (what a resumed run keeps)
+IndividualRecord individualRecordOf(const HistoryIndividual& row) {
+  IndividualRecord record;
+  record.generation = row.generation;
+  record.id = row.id;
+  for (std::uint64_t parent : {row.parent_a, row.parent_b}) {
+    if (parent != kNoId)
+      record.parents.push_back(parent);
+  }
+  record.origin = row.origin;
+  record.fitness = row.fitness;
+  record.status = row.status;
+  record.parts = row.parts;
+  record.eval_seconds = row.eval_seconds;
+  record.worker_rank = row.worker_rank;
+  return record;
+}
+
+GenerationRecord generationRecordOf(const HistoryGeneration& row) {
+  GenerationRecord record;
+  record.generation = row.generation;
+  FitnessStats& s = record.stats;
+  s.count = row.count;
+  s.failed = row.failed;
+  s.best = row.best;
+  s.worst = row.worst;
+  s.mean = row.mean;
+  s.stddev = row.stddev;
+  s.q25 = row.q25;
+  s.median = row.median;
+  s.q75 = row.q75;
+  s.best_id = row.best_id;
+  record.evaluations = row.evaluations;
+  record.workers = row.workers;
+  record.rank0_serial_seconds = row.rank0_serial_seconds;
+  record.evaluation_span_seconds = row.evaluation_span_seconds;
+  record.worker_busy_seconds = row.worker_busy_seconds;
+  record.worker_idle_seconds = row.worker_idle_seconds;
+  record.wall_seconds = row.wall_seconds;
+  return record;
 }
 
 // individuals.tsv and generations.tsv, atomically
@@ -86,22 +129,131 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
                        const std::vector<Genome>& seeds, PopulationEvaluator& evaluator,
                        const RunSettings& run, std::ostream& out) {
   RunResult result;
-  RunDigest digest;
   double cpu_start = processCpuSeconds();
   auto run_start = Clock::now();
-
-  // generation 0
+  auto secondsSince = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  setTestKillPoint(run.test_kill_at);
   Breeder breeder(settings, limits);
   if (run.viable)
     breeder.setViabilityCheck(run.viable);
-  Population population = breeder.initialPopulation(seeds);
-  std::unique_ptr<HistoryWriter> history = openHistory(settings, run);
 
-  for (int g = 0; g < settings.generations; ++g) {
+  // a checkpoint to continue from (checked before anything is overwritten), or a fresh start
+  std::optional<CheckpointState> checkpoint;
+  if (run.history) {
+    makeOutputDirectory(run.out_dir);
+    if (!run.fresh)
+      checkpoint = findCheckpoint(run.out_dir);
+    if (checkpoint)
+      checkResumeSettings(checkpointPath(run.out_dir), checkpoint->config_text, run.config_text);
+  }
+  RunDigest digest;
+  std::optional<Population> last;  // the last evaluated generation
+  std::unique_ptr<HistoryWriter> history;
+  std::vector<double> walls;  // generation wall times, for the max-hours prediction
+  std::uint64_t start = 0;
+  if (checkpoint) {
+    // the history cut back to the checkpoint, the records kept, the breeder and digest state
+    start = checkpoint->next_generation;
+    out << "cambrian evolve: resuming from " << checkpointPath(run.out_dir) << " at generation "
+        << start << " (" << start << " generation(s) done, written by a run of "
+        << checkpoint->rank_count << " rank(s))" << std::endl;
+    HistoryRows kept;
+    try {
+      history =
+          resumeHistory(run.out_dir + "/history.h5", start, historyAttributes(settings, run), kept);
+    } catch (const InputError& e) {
+      throw Error(ExitCode::checkpoint, std::string(e.what()) +
+                                            " (needed to resume from checkpoint.h5); "
+                                            "`cambrian evolve --fresh` starts over");
+    }
+    for (const HistoryIndividual& row : kept.individuals)
+      result.individuals.push_back(individualRecordOf(row));
+    for (const HistoryGeneration& row : kept.generations) {
+      result.generations.push_back(generationRecordOf(row));
+      walls.push_back(row.wall_seconds);
+    }
+    breeder.setNextId(checkpoint->next_id);
+    digest = RunDigest(checkpoint->digest);
+    last = std::move(checkpoint->population);
+    result.resumed = true;
+  } else if (run.history) {
+    // nothing to continue from: stale checkpoint files go, the history starts empty
+    std::error_code error;
+    if (!run.fresh && std::filesystem::exists(run.out_dir + "/history.h5", error))
+      out << "cambrian evolve: no checkpoint in " << run.out_dir << ", starting fresh" << std::endl;
+    removeCheckpoints(run.out_dir);
+    history = std::make_unique<HistoryWriter>(run.out_dir + "/history.h5",
+                                              historyAttributes(settings, run));
+  }
+
+  // the checkpoint of the last evaluated generation; its time goes into that generation's row
+  std::uint64_t checkpointed = start;
+  auto checkpoint_time = Clock::now();
+  double checkpoint_seconds_max = 0;
+  auto writeRunCheckpoint = [&](std::uint64_t next_generation) {
+    auto begin = Clock::now();
+    CheckpointState state;
+    state.config_text = run.config_text;
+    state.seed = settings.seed;
+    state.next_generation = next_generation;
+    state.next_id = breeder.nextId();
+    state.digest = digest.value();
+    state.rank_count = run.rank_count;
+    state.population = *last;
+    writeCheckpoint(run.out_dir, state, [&](const std::string& stage) {
+      testKillPoint("checkpoint_" + stage, next_generation - 1);
+    });
+    testKillPoint("checkpoint_done", next_generation - 1);
+    double seconds = std::max(secondsSince(begin), 1e-9);
+    history->setCheckpointSeconds(seconds);
+    checkpoint_seconds_max = std::max(checkpoint_seconds_max, seconds);
+    checkpointed = next_generation;
+    checkpoint_time = Clock::now();
+  };
+
+  // why the run should stop before generation g ("" to go on)
+  auto stopReason = [&](std::uint64_t g) -> std::string {
+    if (run.stop_requested && run.stop_requested())
+      return std::string("stopped by ") + (run.stop_reason ? run.stop_reason() : "a signal");
+    if (run.max_hours > 0 && !walls.empty()) {
+      // the slowest of the last five generations plus the slowest checkpoint must still fit
+      double predicted =
+          *std::max_element(walls.end() - std::min<std::size_t>(walls.size(), 5), walls.end()) +
+          checkpoint_seconds_max;
+      double limit = run.max_hours * 3600;
+      if (secondsSince(run_start) + predicted > limit) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "stopped before the --max-hours %g limit (generation %llu would need about "
+                      "%.1f s, %.1f s are left)",
+                      run.max_hours, static_cast<unsigned long long>(g), predicted,
+                      std::max(0.0, limit - secondsSince(run_start)));
+        return text;
+      }
+    }
+    return "";
+  };
+
+  const auto total = static_cast<std::uint64_t>(std::max(settings.generations, 0));
+  std::string stop_reason;
+  std::uint64_t g = start;
+  for (; g < total; ++g) {
+    // a clean stop: the last generation checkpointed, then out
+    stop_reason = stopReason(g);
+    if (!stop_reason.empty()) {
+      if (history && last && checkpointed != g)
+        writeRunCheckpoint(g);
+      break;
+    }
     auto generation_start = Clock::now();
 
-    // evaluate what is new, then summarise in id order
+    // breed (generation 0: the initial population), then evaluate what is new
+    Population population = last ? breeder.nextGeneration(*last) : breeder.initialPopulation(seeds);
     EvaluationSpan span = evaluator.evaluate(population, settings.seed);
+
+    // summarise in id order
     GenerationRecord record;
     record.generation = population.generation;
     record.stats = computeStats(population);
@@ -113,33 +265,24 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
         std::max(0.0, span.workers * span.span_seconds - span.busy_seconds);
     digest.add(population);
     appendRecords(population, result.individuals);
-
-    // the history rows of the evaluated generation (appended once its timings are known)
-    std::vector<HistoryIndividual> history_rows;
-    HistoryGeneration history_generation;
-    if (history) {
-      for (const Individual& individual : population.individuals)
-        history_rows.push_back(makeHistoryIndividual(individual));
-      history_generation = makeHistoryGeneration(record, population);
-    }
-
-    // breed the next generation (rank 0's serial part)
-    if (g + 1 < settings.generations)
-      population = breeder.nextGeneration(population);
-    record.wall_seconds = std::chrono::duration<double>(Clock::now() - generation_start).count();
+    record.wall_seconds = secondsSince(generation_start);
     record.rank0_serial_seconds = std::max(0.0, record.wall_seconds - span.span_seconds);
     result.generations.push_back(record);
+    walls.push_back(record.wall_seconds);
 
     // append and flush the generation to the history
     if (history) {
-      history_generation.rank0_serial_seconds = record.rank0_serial_seconds;
-      history_generation.wall_seconds = record.wall_seconds;
-      history->appendGeneration(history_rows, history_generation);
+      std::vector<HistoryIndividual> history_rows;
+      for (const Individual& individual : population.individuals)
+        history_rows.push_back(makeHistoryIndividual(individual));
+      history->appendGeneration(history_rows, makeHistoryGeneration(record, population));
+      testKillPoint("history", g);
     }
+    last = std::move(population);
 
     // progress
-    double elapsed = std::chrono::duration<double>(Clock::now() - run_start).count();
-    double eta = elapsed / (g + 1) * (settings.generations - g - 1);
+    double elapsed = secondsSince(run_start);
+    double eta = elapsed / static_cast<double>(g + 1 - start) * static_cast<double>(total - g - 1);
     if (!run.quiet)
       out << progressLine(record, settings.generations, eta) << std::endl;
     if (run.verbose) {
@@ -153,12 +296,27 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
           static_cast<unsigned long long>(record.stats.best_id));
       out << detail << std::endl;
     }
+
+    // a checkpoint every checkpoint_every generations or checkpoint_minutes, and at the end
+    bool due = g + 1 == total ||
+               (run.checkpoint_every > 0 &&
+                g + 1 - checkpointed >= static_cast<std::uint64_t>(run.checkpoint_every)) ||
+               (run.checkpoint_minutes > 0 &&
+                secondsSince(checkpoint_time) >= run.checkpoint_minutes * 60);
+    if (history && due)
+      writeRunCheckpoint(g + 1);
   }
 
   // digest, timings and the tables
+  result.stopped = !stop_reason.empty();
+  result.next_generation = std::max(g, start);
+  if (result.stopped)
+    out << "cambrian evolve: " << stop_reason << " after " << result.next_generation
+        << " generation(s); run the same command again to continue from "
+        << checkpointPath(run.out_dir) << std::endl;
   result.digest = digest.hex();
   result.rank0_cpu_seconds = processCpuSeconds() - cpu_start;
-  result.wall_seconds = std::chrono::duration<double>(Clock::now() - run_start).count();
+  result.wall_seconds = secondsSince(run_start);
   if (history)
     history->close();
   writeTables(run.out_dir, result);

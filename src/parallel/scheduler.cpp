@@ -4,6 +4,7 @@
 #include "cambrian/rng.hpp"
 
 #include "parallel/mpi_context.hpp"
+#include "parallel/test_kill.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -69,12 +70,17 @@ EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_
   span.workers = 1;
   auto start = Clock::now();
   // one after another, in scheduling order
-  for (std::size_t index : schedulingOrder(population)) {
+  std::vector<std::size_t> order = schedulingOrder(population);
+  std::size_t order_size = order.size();
+  for (std::size_t index : order) {
     Individual& individual = population.individuals[index];
     EvalResult result = evaluateRequest(makeRequest(individual, run_seed), settings_, 0, std::cerr);
     store(individual, result.outcome, 0);
     span.busy_seconds += result.outcome.wall_seconds;
     ++span.evaluations;
+    // testing aid: a kill in the middle of the generation
+    if (2 * span.evaluations >= order_size && 2 * (span.evaluations - 1) < order_size)
+      testKillPoint("evaluation", population.generation);
   }
   span.span_seconds = since(start);
   return span;
@@ -142,6 +148,9 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     span.busy_seconds += result.outcome.wall_seconds;
     ++span.evaluations;
     --outstanding;
+    // testing aid: a kill in the middle of the generation
+    if (2 * span.evaluations >= order.size() && 2 * (span.evaluations - 1) < order.size())
+      testKillPoint("evaluation", population.generation);
     if (next < order.size())
       hand(message.source);
   }

@@ -620,6 +620,80 @@ void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
   }
 }
 
+void HistoryWriter::setCheckpointSeconds(double seconds) {
+  if (!impl_)
+    throw Error(ExitCode::output_file, path_ + ": history file is closed");
+  QuietErrors quiet;
+  hid_t dataset = impl_->generations.at("checkpoint_seconds").get();
+
+  // the last row of the column, rewritten in place (SWMR allows changing existing data)
+  Handle space(H5Dget_space(dataset), H5Sclose);
+  hsize_t rows = 0;
+  if (H5Sget_simple_extent_dims(space.get(), &rows, nullptr) != 1 || rows == 0)
+    return;
+  hsize_t offset = rows - 1, count = 1;
+  Handle memory_space(H5Screate_simple(1, &count, nullptr), H5Sclose);
+  bool ok =
+      H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr) >= 0 &&
+      H5Dwrite(dataset, H5T_NATIVE_DOUBLE, memory_space.get(), space.get(), H5P_DEFAULT,
+               &seconds) >= 0 &&
+      H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL) >= 0;
+  if (!ok)
+    throw Error(ExitCode::output_file,
+                path_ + ": cannot write checkpoint_seconds of row " + std::to_string(offset));
+}
+
+void HistoryWriter::renameTo(const std::string& path) {
+  std::error_code error;
+  std::filesystem::rename(path_, path, error);
+  if (error)
+    throw Error(ExitCode::output_file,
+                path + ": cannot rename " + path_ + " into place: " + error.message());
+  path_ = path;
+}
+
+std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint64_t generations,
+                                             HistoryAttributes attributes, HistoryRows& kept) {
+  // the old rows (a crashed writer's file opens for SWMR reading)
+  kept = HistoryRows{};
+  std::vector<HistoryIndividual> individuals;
+  std::vector<HistoryGeneration> rows;
+  {
+    HistoryReader reader(path);
+    individuals = reader.individuals();
+    rows = reader.generations();
+    if (attributes.start_time.empty())
+      attributes.start_time = reader.attributes().start_time;
+  }
+  if (rows.size() < generations)
+    throw InputError(path + ": holds " + std::to_string(rows.size()) +
+                     " generation rows, the checkpoint continues from generation " +
+                     std::to_string(generations));
+  for (std::uint64_t g = 0; g < generations; ++g) {
+    if (rows[g].generation != g)
+      throw InputError(path + ": generation row " + std::to_string(g) + " holds generation " +
+                       std::to_string(rows[g].generation) + " (corrupt history)");
+  }
+
+  // a new file with the kept rows, generation by generation, renamed over the old one
+  auto writer = std::make_unique<HistoryWriter>(path + ".resume.tmp", attributes);
+  std::size_t next = 0;
+  for (std::uint64_t g = 0; g < generations; ++g) {
+    std::vector<HistoryIndividual> group;
+    while (next < individuals.size() && individuals[next].generation == g)
+      group.push_back(std::move(individuals[next++]));
+    if (group.size() != rows[g].count)
+      throw InputError(path + ": generation " + std::to_string(g) + " has " +
+                       std::to_string(group.size()) + " individual rows, its row says " +
+                       std::to_string(rows[g].count) + " (corrupt history)");
+    writer->appendGeneration(group, rows[g]);
+    kept.individuals.insert(kept.individuals.end(), group.begin(), group.end());
+    kept.generations.push_back(rows[g]);
+  }
+  writer->renameTo(path);
+  return writer;
+}
+
 void HistoryWriter::close() {
   if (!impl_)
     return;

@@ -121,6 +121,11 @@ class HistoryWriter {
   /// `generation.unix_time` is set to now when 0.
   void appendGeneration(const std::vector<HistoryIndividual>& individuals,
                         HistoryGeneration generation);
+  /// Sets checkpoint_seconds of the last generation row in place (the checkpoint written after
+  /// it) and flushes; does nothing when no row exists yet.
+  void setCheckpointSeconds(double seconds);
+  /// Renames the open file to `path` (same file system) and makes it the writer's path.
+  void renameTo(const std::string& path);
   /// Flushes and closes the file; further appends throw.
   void close();
   /// The file's path.
@@ -131,6 +136,21 @@ class HistoryWriter {
   std::string path_;
   std::unique_ptr<Impl> impl_;
 };
+
+/// The rows a resumed history keeps.
+struct HistoryRows {
+  std::vector<HistoryIndividual> individuals;  ///< in file order
+  std::vector<HistoryGeneration> generations;  ///< generation i at index i
+};
+
+/// Reopens the history of a resumed run: reads `path` (also after a crash of its writer), keeps
+/// the rows of generations 0..generations-1 and drops later ones (they will be recomputed),
+/// rewrites it through `path`.resume.tmp renamed over `path` with `attributes` (start_time of
+/// the old file kept) and returns the writer, in SWMR mode, ready to append generation
+/// `generations`; `kept` receives the rows kept. Throws InputError naming the file when it is
+/// unreadable or lacks one of those generations, Error(output_file) when it cannot be rewritten.
+std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint64_t generations,
+                                             HistoryAttributes attributes, HistoryRows& kept);
 
 /// Reads a history file, complete or still being written (opened for SWMR reading). Rows are
 /// those every column holds. A missing, truncated, corrupt, non-HDF5 or foreign file throws

@@ -1,0 +1,89 @@
+// cambrian: the checkpoint file (checkpoint.h5) — everything rank 0 needs to continue a run
+// bit-identically from a generation boundary: the last evaluated population (ids, parents,
+// origins, genomes, outcomes), the next id, the run digest so far and the settings. Written
+// atomically (temporary file, fsync, rename, previous one kept); layout in docs/hdf5-schema.md,
+// rules in docs/checkpoints.md.
+#pragma once
+
+#include "evolution/population.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace cambrian {
+
+/// Version of the checkpoint layout; a reader refuses files with a newer one.
+constexpr int kCheckpointFormatVersion = 1;
+
+/// Value of the root attribute "format" that marks a cambrian checkpoint file.
+constexpr const char* kCheckpointFormatName = "cambrian-checkpoint";
+
+/// The state a run continues from.
+struct CheckpointState {
+  std::string config_text;            ///< the full effective settings as INI text
+  std::uint64_t seed = 0;             ///< run seed
+  std::uint64_t next_generation = 0;  ///< generation the run continues with (population's + 1)
+  std::uint64_t next_id = 0;          ///< id the next new individual gets (Breeder::nextId)
+  std::uint64_t digest = 0;           ///< RunDigest::value() over every generation so far
+  int rank_count = 1;                 ///< MPI ranks of the run that wrote it (information only)
+  Population population;              ///< the last evaluated generation, every field kept
+};
+
+/// DIR/checkpoint.h5.
+std::string checkpointPath(const std::string& dir);
+/// DIR/checkpoint.prev.h5, the checkpoint before the current one.
+std::string previousCheckpointPath(const std::string& dir);
+
+/// Stage names passed to the write observer: "write" (the temporary file holds every dataset
+/// but is not closed yet) and "rename" (temporary file complete and synced, previous one kept,
+/// not yet renamed into place).
+using CheckpointStageObserver = std::function<void(const std::string& stage)>;
+
+/// Writes DIR/checkpoint.h5 atomically: DIR/checkpoint.h5.tmp is written, closed and fsynced,
+/// the current checkpoint is kept as DIR/checkpoint.prev.h5 (hard link, so checkpoint.h5 never
+/// disappears), the temporary file is renamed into place and DIR is fsynced. `observer` (may be
+/// empty) is called at each stage. Throws Error(output_file) naming the path on failure; the
+/// previous checkpoint then stays intact.
+void writeCheckpoint(const std::string& dir, const CheckpointState& state,
+                     const CheckpointStageObserver& observer = {});
+
+/// Reads and checks a checkpoint file. Throws Error(checkpoint) naming `path` and what is wrong
+/// when it is missing, not HDF5, truncated, corrupt (state hash mismatch), foreign (format
+/// attribute) or of a newer format version.
+CheckpointState readCheckpoint(const std::string& path);
+
+/// The checkpoint a run in DIR continues from: nullopt when DIR holds none and none is expected
+/// (a fresh run). Throws Error(checkpoint) naming the file when checkpoint.h5 is unreadable, or
+/// missing although checkpoint.prev.h5 exists or DIR/history.h5 records a written checkpoint;
+/// the message says whether checkpoint.prev.h5 is good (no automatic fallback) and that
+/// `--fresh` starts over.
+std::optional<CheckpointState> findCheckpoint(const std::string& dir);
+
+/// Removes DIR/checkpoint.h5, checkpoint.prev.h5 and checkpoint.h5.tmp (a fresh start).
+/// Throws Error(output_file) naming a file that cannot be removed.
+void removeCheckpoints(const std::string& dir);
+
+/// True for settings that may change between a checkpoint and its resume because they do not
+/// affect results: evolution.generations, run.out, run.quiet, run.verbose, run.max_hours,
+/// run.checkpoint_every, run.checkpoint_minutes, run.test_kill_at. Every other key counts.
+bool isRunOnlySetting(const std::string& key);
+
+/// "section.key" -> value of every `key = value` line of INI text under its `[section]`.
+std::map<std::string, std::string> settingsOfConfigText(const std::string& config_text);
+
+/// `config_text` without the run-only settings (what the config hash covers).
+std::string resultConfigText(const std::string& config_text);
+
+/// configHash(resultConfigText(config_text)): equal for runs that must give equal results.
+std::string resultConfigHash(const std::string& config_text);
+
+/// Compares the settings of a checkpoint with the current ones, key by key. Throws
+/// Error(checkpoint) naming `path`, the first differing key that affects results, its old and its
+/// new value, when one differs.
+void checkResumeSettings(const std::string& path, const std::string& saved_config_text,
+                         const std::string& current_config_text);
+
+}  // namespace cambrian

@@ -1,0 +1,224 @@
+#!/usr/bin/env bash
+# Checkpoint / resume checks of `cambrian evolve`, run by CTest at several rank counts.
+# usage: resume_check.sh MODE CAMBRIAN MPIEXEC NPFLAG NP WORKDIR COMPARE
+#   kill_resume:  a straight run vs the same run SIGKILLed (run.test_kill_at) mid-generation,
+#                 after the history append, mid-checkpoint-write, before the rename and after it,
+#                 then resumed: identical histories (compare_histories.py), digests and tables,
+#                 nothing before the last checkpoint lost
+#   other_ranks:  killed at NP ranks, resumed at 1 rank (and a 1-rank kill resumed at NP)
+#   signal:       SIGUSR1 stops cleanly (exit 0, checkpoint, workers survive), rerun finishes it
+#   max_hours:    --max-hours stops cleanly before the limit, rerun finishes it
+#   settings:     a changed result setting is refused (exit 6, key and values named, nothing
+#                 overwritten); run-only keys may change; --fresh starts over; raising
+#                 evolution.generations extends a finished run; a corrupt checkpoint is refused
+#   walk:         a tiny walk run killed and resumed equals the straight one
+# NP 1 runs the binary without mpiexec (in-process evaluation).
+set -euo pipefail
+mode=$1 cambrian=$2 mpiexec=$3 npflag=$4 np=$5 work=$6 compare=$7
+rm -rf "$work" && mkdir -p "$work"
+
+# one evolve job at N ranks
+job() {
+  local n=$1
+  shift
+  if [ "$n" -eq 1 ]; then
+    "$cambrian" evolve "$@"
+  else
+    "$mpiexec" "$npflag" "$n" --oversubscribe "$cambrian" evolve "$@"
+  fi
+}
+
+cat > "$work/run.ini" <<INI
+[task]
+name = synthetic
+synthetic_cost_us = 300
+synthetic_cost_per_gene_us = 20
+synthetic_noise = 0.3
+[evolution]
+population = 12
+generations = 6
+selection = tournament
+[run]
+seed = 11
+quiet = true
+INI
+
+# the straight run every other run must reproduce
+straight() {
+  job "${2:-$np}" --config "$work/run.ini" --out "$work/$1" "${@:3}" > "$work/$1.txt"
+}
+
+# run B equals the straight run A: digest, history (timing aside), tables (timing aside)
+same() {
+  local a=$1 b=$2
+  local da db
+  da=$(grep '^digest ' "$work/$a.txt") db=$(grep '^digest ' "$work/$b.txt")
+  echo "$a: $da   $b: $db"
+  [ -n "$da" ] && [ "$da" = "$db" ]
+  "$compare" "$work/$a/history.h5" "$work/$b/history.h5"
+  diff <(cut -f1-7 "$work/$a/individuals.tsv") <(cut -f1-7 "$work/$b/individuals.tsv")
+  diff <(cut -f1-10 "$work/$a/generations.tsv") <(cut -f1-10 "$work/$b/generations.tsv")
+}
+
+# a run killed at POINT, then resumed (at RESUME_NP ranks) until done: NAME.txt holds the end
+kill_and_resume() {
+  local name=$1 point=$2 expect_from=$3 resume_np=${4:-$np}
+  set +e
+  job "$np" --config "$work/run.ini" --out "$work/$name" --run.test_kill_at "$point" \
+    > "$work/$name.killed.txt" 2> "$work/$name.killed.err"
+  local rc=$?
+  set -e
+  echo "$point: killed run exit $rc"
+  [ "$rc" -ne 0 ]
+  grep -q "run.test_kill_at $point: SIGKILL" "$work/$name.killed.err"
+  job "$resume_np" --config "$work/run.ini" --out "$work/$name" > "$work/$name.txt"
+  # nothing before the last checkpoint lost: it resumes from the expected generation
+  grep "resuming from" "$work/$name.txt"
+  grep -q "resuming from $work/$name/checkpoint.h5 at generation $expect_from " "$work/$name.txt"
+}
+
+case $mode in
+  kill_resume)
+    straight straight
+    # mid-generation 2: the checkpoint after generation 1 continues from 2
+    kill_and_resume mid_generation evaluation:2 2
+    same straight mid_generation
+    # rows of generation 3 in the history, no checkpoint of it yet: they are recomputed
+    kill_and_resume after_history history:3 3
+    same straight after_history
+    # the checkpoint after generation 1 half written: the one after generation 0 is used
+    kill_and_resume mid_write checkpoint_write:1 1
+    same straight mid_write
+    # complete but not renamed into place
+    kill_and_resume before_rename checkpoint_rename:4 4
+    same straight before_rename
+    # in place, its time not yet in the history
+    kill_and_resume after_rename checkpoint_done:2 3
+    same straight after_rename
+    ;;
+  other_ranks)
+    straight straight 1
+    # killed at NP ranks, resumed in one process
+    kill_and_resume np_to_one evaluation:3 3 1
+    same straight np_to_one
+    # a checkpoint of a single-rank run, resumed at NP ranks
+    np_saved=$np
+    np=1 kill_and_resume one_to_np history:2 2 "$np_saved"
+    same straight one_to_np
+    ;;
+  signal)
+    straight straight
+    # slower generations, so the signal lands mid-run; SIGUSR1 to the job (mpiexec forwards it)
+    sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 20000/' "$work/run.ini"
+    straight slow_straight
+    job "$np" --config "$work/run.ini" --out "$work/stopped" --run.quiet false \
+      > "$work/stopped.first.txt" 2> "$work/stopped.err" &
+    pid=$!
+    for _ in $(seq 1 600); do
+      grep -q '^gen 2/' "$work/stopped.first.txt" 2> /dev/null && break
+      sleep 0.05
+    done
+    kill -USR1 "$pid"
+    set +e
+    wait "$pid"
+    rc=$?
+    set -e
+    cat "$work/stopped.first.txt"
+    echo "stopped run exit $rc"
+    [ "$rc" -eq 0 ]
+    grep -q "stopped by SIGUSR1 after .* run the same command again" "$work/stopped.first.txt"
+    grep -q '^digest_so_far ' "$work/stopped.first.txt"
+    [ -s "$work/stopped/checkpoint.h5" ]
+    # workers survived: no error from any rank
+    ! grep -i -e "error" -e "signal" "$work/stopped.err"
+    job "$np" --config "$work/run.ini" --out "$work/stopped" > "$work/stopped.txt"
+    same slow_straight stopped
+    ;;
+  max_hours)
+    sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 15000/' "$work/run.ini"
+    sed -i 's/^generations = 6/generations = 10/' "$work/run.ini"
+    straight straight
+    # about 1.1 s allowed, generations of about 0.2 s or more: it stops early, exit 0
+    job "$np" --config "$work/run.ini" --out "$work/limited" --max-hours 0.0003 \
+      > "$work/limited.first.txt"
+    cat "$work/limited.first.txt"
+    grep -q "stopped before the --max-hours 0.0003 limit" "$work/limited.first.txt"
+    grep -q "run the same command again to continue" "$work/limited.first.txt"
+    job "$np" --config "$work/run.ini" --out "$work/limited" > "$work/limited.txt"
+    same straight limited
+    ;;
+  settings)
+    straight straight
+    set +e
+    job "$np" --config "$work/run.ini" --out "$work/changed" --run.test_kill_at history:3 \
+      > /dev/null 2>&1
+    set -e
+    cp "$work/changed/checkpoint.h5" "$work/saved_checkpoint.h5"
+    # a setting that changes results: exit 6 naming key and values, nothing overwritten
+    set +e
+    job "$np" --config "$work/run.ini" --out "$work/changed" --task.synthetic_noise 0.5 \
+      > "$work/changed.out" 2> "$work/changed.err"
+    rc=$?
+    set -e
+    cat "$work/changed.err"
+    [ "$rc" -eq 6 ]
+    grep -q "task.synthetic_noise was '0.3' .* is '0.5' now" "$work/changed.err"
+    cmp "$work/changed/checkpoint.h5" "$work/saved_checkpoint.h5"
+    # run-only keys may change (quiet, checkpoint cadence); the rest goes on exactly
+    job "$np" --config "$work/run.ini" --out "$work/changed" --run.quiet false \
+      --run.checkpoint_every 2 > "$work/changed.txt"
+    grep -q '^gen 6/6' "$work/changed.txt"
+    same straight changed
+    # the finished run again: nothing to do, same digest
+    job "$np" --config "$work/run.ini" --out "$work/changed" > "$work/again.txt"
+    grep -q "resuming from .* at generation 6 " "$work/again.txt"
+    cp -r "$work/changed" "$work/again"
+    same straight again
+    # --fresh starts over
+    job "$np" --config "$work/run.ini" --out "$work/changed" --fresh > "$work/fresh.txt"
+    ! grep -q "resuming" "$work/fresh.txt"
+    rm -rf "$work/fresh" && cp -r "$work/changed" "$work/fresh"
+    same straight fresh
+    # raising evolution.generations extends a finished run
+    sed 's/^generations = 6/generations = 8/' "$work/run.ini" > "$work/long.ini"
+    job "$np" --config "$work/long.ini" --out "$work/long_straight" > "$work/long_straight.txt"
+    job "$np" --config "$work/long.ini" --out "$work/changed" > "$work/extended.txt"
+    grep -q "resuming from .* at generation 6 " "$work/extended.txt"
+    rm -rf "$work/extended" && cp -r "$work/changed" "$work/extended"
+    same long_straight extended
+    # a corrupt checkpoint: exit 6 naming the file, the good previous one offered, untouched
+    head -c 900 "$work/changed/checkpoint.h5" > "$work/cut.h5"
+    cp "$work/cut.h5" "$work/changed/checkpoint.h5"
+    set +e
+    job "$np" --config "$work/long.ini" --out "$work/changed" > /dev/null 2> "$work/corrupt.err"
+    rc=$?
+    set -e
+    cat "$work/corrupt.err"
+    [ "$rc" -eq 6 ]
+    grep -q "$work/changed/checkpoint.h5: .*checkpoint.prev.h5 is good .*--fresh" \
+      "$work/corrupt.err"
+    cmp "$work/changed/checkpoint.h5" "$work/cut.h5"
+    ;;
+  walk)
+    cat > "$work/run.ini" <<INI
+[task]
+name = walk
+evaluation_time = 0.5
+settle_time = 0.1
+[evolution]
+population = 6
+generations = 3
+[run]
+seed = 4
+quiet = true
+INI
+    straight straight
+    kill_and_resume walk_killed evaluation:1 1
+    same straight walk_killed
+    ;;
+  *)
+    echo "unknown mode $mode" >&2
+    exit 2
+    ;;
+esac
+echo "resume_check $mode at $np rank(s): ok"

@@ -1,0 +1,342 @@
+#include "store/checkpoint.hpp"
+
+#include "cambrian/error.hpp"
+#include "cambrian/genome.hpp"
+
+#include "store/history.hpp"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace cambrian {
+namespace {
+
+// a fresh, empty directory in the test temp directory
+std::string tempDir(const std::string& name) {
+  std::string dir = testing::TempDir() + "/cambrian_checkpoint_test_" + name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+const std::string kConfig =
+    "[evolution]\ngenerations = 5\npopulation = 4\n\n[physics]\ntime_step = 0.004\n\n[run]\n"
+    "out = a\nquiet = true\nseed = 9\n";
+
+// a state with every kind of field filled: parents, measures, messages, a NaN fitness
+CheckpointState makeState(std::uint64_t generation, std::uint64_t salt = 0) {
+  CheckpointState state;
+  state.config_text = kConfig;
+  state.seed = 9;
+  state.next_generation = generation + 1;
+  state.next_id = 100 + salt;
+  state.digest = 0x0123456789abcdefULL ^ salt;
+  state.rank_count = 3;
+  state.population.generation = generation;
+  for (std::uint64_t i = 0; i < 4; ++i) {
+    Individual individual;
+    individual.id = 10 * generation + i;
+    individual.generation = generation;
+    individual.origin = i == 0 ? Origin::elite : (i == 1 ? Origin::crossover : Origin::mutation);
+    individual.parents = i == 1 ? std::vector<std::uint64_t>{3, 5} : std::vector<std::uint64_t>{2};
+    individual.genome = randomGenome(GenomeLimits{}, 7 + salt, 0, i);
+    individual.evaluated = true;
+    individual.outcome.fitness = i == 3 ? std::nan("") : 1.25 + static_cast<double>(i);
+    individual.outcome.status = i == 2 ? EvalStatus::failed : EvalStatus::ok;
+    individual.outcome.measures = {{"distance", 0.5 * i}, {"body_length", 2.0}};
+    individual.outcome.steps = 2400 + i;
+    individual.outcome.wall_seconds = 0.01 * i;
+    individual.outcome.parts = 2 + static_cast<int>(i);
+    individual.outcome.joints = 1;
+    individual.outcome.neurons = 5;
+    individual.outcome.message = i == 2 ? "evaluator threw: bad bytes" : "";
+    individual.eval_seconds = 0.02 * i;
+    individual.worker_rank = static_cast<int>(i) - 1;
+    state.population.individuals.push_back(individual);
+  }
+  return state;
+}
+
+// the message and code of readCheckpoint / findCheckpoint failures
+template <class F>
+std::pair<ExitCode, std::string> failure(F call) {
+  try {
+    call();
+  } catch (const Error& e) {
+    return {e.code(), e.what()};
+  }
+  return {ExitCode::ok, ""};
+}
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// runs `body` in a child process and expects it to die by SIGKILL
+void expectKilled(const std::function<void()>& body) {
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    try {
+      body();
+    } catch (...) {
+      _exit(3);
+    }
+    _exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGKILL);
+}
+
+TEST(Checkpoint, RoundTripsEveryField) {
+  std::string dir = tempDir("round_trip");
+  CheckpointState state = makeState(3);
+  writeCheckpoint(dir, state);
+  EXPECT_FALSE(std::filesystem::exists(checkpointPath(dir) + ".tmp"));
+  CheckpointState back = readCheckpoint(checkpointPath(dir));
+
+  // scalars
+  EXPECT_EQ(back.config_text, state.config_text);
+  EXPECT_EQ(back.seed, 9u);
+  EXPECT_EQ(back.next_generation, 4u);
+  EXPECT_EQ(back.next_id, 100u);
+  EXPECT_EQ(back.digest, state.digest);
+  EXPECT_EQ(back.rank_count, 3);
+  EXPECT_EQ(back.population.generation, 3u);
+
+  // every individual, bit for bit
+  ASSERT_EQ(back.population.individuals.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Individual& a = state.population.individuals[i];
+    const Individual& b = back.population.individuals[i];
+    EXPECT_EQ(a.id, b.id);
+    EXPECT_EQ(a.generation, b.generation);
+    EXPECT_EQ(a.parents, b.parents);
+    EXPECT_EQ(a.origin, b.origin);
+    EXPECT_EQ(serializeGenome(a.genome), serializeGenome(b.genome));
+    EXPECT_EQ(std::memcmp(&a.outcome.fitness, &b.outcome.fitness, sizeof(double)), 0);
+    EXPECT_EQ(a.outcome.status, b.outcome.status);
+    EXPECT_EQ(a.outcome.measures, b.outcome.measures);
+    EXPECT_EQ(a.outcome.steps, b.outcome.steps);
+    EXPECT_EQ(a.outcome.parts, b.outcome.parts);
+    EXPECT_EQ(a.outcome.message, b.outcome.message);
+    EXPECT_EQ(a.eval_seconds, b.eval_seconds);
+    EXPECT_EQ(a.worker_rank, b.worker_rank);
+    EXPECT_TRUE(b.evaluated);
+  }
+}
+
+TEST(Checkpoint, KeepsThePreviousOne) {
+  std::string dir = tempDir("rotation");
+  writeCheckpoint(dir, makeState(1));
+  EXPECT_FALSE(std::filesystem::exists(previousCheckpointPath(dir)));
+  writeCheckpoint(dir, makeState(2));
+  EXPECT_EQ(readCheckpoint(checkpointPath(dir)).next_generation, 3u);
+  EXPECT_EQ(readCheckpoint(previousCheckpointPath(dir)).next_generation, 2u);
+  writeCheckpoint(dir, makeState(3));
+  EXPECT_EQ(readCheckpoint(checkpointPath(dir)).next_generation, 4u);
+  EXPECT_EQ(readCheckpoint(previousCheckpointPath(dir)).next_generation, 3u);
+  EXPECT_EQ(findCheckpoint(dir)->next_generation, 4u);
+}
+
+TEST(Checkpoint, WriterKilledAtEveryStageLeavesAUsableCheckpoint) {
+  for (const char* stage : {"write", "rename"}) {
+    std::string dir = tempDir(std::string("killed_") + stage);
+    writeCheckpoint(dir, makeState(1));
+    writeCheckpoint(dir, makeState(2));
+    std::string before = fileBytes(checkpointPath(dir));
+    expectKilled([&] {
+      writeCheckpoint(dir, makeState(3), [&](const std::string& s) {
+        if (s == stage)
+          std::raise(SIGKILL);
+      });
+    });
+    // the last complete checkpoint is still in place, untouched
+    EXPECT_TRUE(std::filesystem::exists(checkpointPath(dir) + ".tmp")) << stage;
+    EXPECT_EQ(fileBytes(checkpointPath(dir)), before) << stage;
+    EXPECT_EQ(findCheckpoint(dir)->next_generation, 3u) << stage;
+    // and the next write goes through
+    writeCheckpoint(dir, makeState(3));
+    EXPECT_EQ(findCheckpoint(dir)->next_generation, 4u) << stage;
+  }
+}
+
+TEST(Checkpoint, EmptyDirectoryMeansAFreshRun) {
+  std::string dir = tempDir("empty");
+  EXPECT_FALSE(findCheckpoint(dir).has_value());
+  auto [code, message] = failure([&] { readCheckpoint(checkpointPath(dir)); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find(checkpointPath(dir)), std::string::npos) << message;
+  EXPECT_NE(message.find("no such"), std::string::npos) << message;
+}
+
+TEST(Checkpoint, TruncatedFileIsRefusedAndThePreviousOneIsOffered) {
+  std::string dir = tempDir("truncated");
+  writeCheckpoint(dir, makeState(1));
+  writeCheckpoint(dir, makeState(2));
+  std::string path = checkpointPath(dir);
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
+  std::string truncated = fileBytes(path);
+  auto [code, message] = failure([&] { findCheckpoint(dir); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+  EXPECT_NE(message.find("checkpoint.prev.h5 is good (continues from generation 2)"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("--fresh"), std::string::npos) << message;
+  // nothing overwritten
+  EXPECT_EQ(fileBytes(path), truncated);
+}
+
+TEST(Checkpoint, NonHdf5AndForeignFilesAreRefused) {
+  std::string dir = tempDir("foreign");
+  std::string path = checkpointPath(dir);
+  std::ofstream(path) << "just some text\n";
+  auto [code, message] = failure([&] { findCheckpoint(dir); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("not an HDF5 file"), std::string::npos) << message;
+
+  // a history file is HDF5 but not a checkpoint
+  std::filesystem::remove(path);
+  {
+    HistoryAttributes attributes;
+    HistoryWriter writer(path, attributes);
+  }
+  std::tie(code, message) = failure([&] { readCheckpoint(path); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("not a cambrian checkpoint"), std::string::npos) << message;
+  EXPECT_NE(message.find("cambrian-history"), std::string::npos) << message;
+}
+
+// rewrites a uint attribute / one byte of a dataset of a checkpoint through HDF5
+void patchFile(const std::string& path, const std::function<void(hid_t)>& patch) {
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  patch(file);
+  H5Fclose(file);
+}
+
+TEST(Checkpoint, NewerFormatVersionIsRefused) {
+  std::string dir = tempDir("newer");
+  writeCheckpoint(dir, makeState(1));
+  patchFile(checkpointPath(dir), [](hid_t file) {
+    hid_t attribute = H5Aopen(file, "format_version", H5P_DEFAULT);
+    std::int32_t version = kCheckpointFormatVersion + 1;
+    H5Awrite(attribute, H5T_NATIVE_INT32, &version);
+    H5Aclose(attribute);
+  });
+  auto [code, message] = failure([&] { readCheckpoint(checkpointPath(dir)); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("format_version 2 is not supported"), std::string::npos) << message;
+}
+
+TEST(Checkpoint, ChangedContentsFailTheStateHash) {
+  std::string dir = tempDir("corrupt");
+  writeCheckpoint(dir, makeState(1));
+  patchFile(checkpointPath(dir), [](hid_t file) {
+    // the digest attribute no longer matches the hash of the state
+    hid_t attribute = H5Aopen(file, "next_id", H5P_DEFAULT);
+    std::uint64_t id = 7;
+    H5Awrite(attribute, H5T_NATIVE_UINT64, &id);
+    H5Aclose(attribute);
+  });
+  auto [code, message] = failure([&] { readCheckpoint(checkpointPath(dir)); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("state_hash"), std::string::npos) << message;
+}
+
+TEST(Checkpoint, MissingButExpectedIsAnError) {
+  // a previous checkpoint without a current one
+  std::string dir = tempDir("missing_current");
+  writeCheckpoint(dir, makeState(1));
+  writeCheckpoint(dir, makeState(2));
+  std::filesystem::remove(checkpointPath(dir));
+  auto [code, message] = failure([&] { findCheckpoint(dir); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find(checkpointPath(dir) + ": missing"), std::string::npos) << message;
+  EXPECT_NE(message.find("is good"), std::string::npos) << message;
+
+  // a history that records a checkpoint
+  dir = tempDir("missing_recorded");
+  {
+    HistoryWriter writer(dir + "/history.h5", HistoryAttributes{});
+    HistoryGeneration row;
+    row.count = 0;
+    writer.appendGeneration({}, row);
+    writer.setCheckpointSeconds(0.25);
+  }
+  std::tie(code, message) = failure([&] { findCheckpoint(dir); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("records that checkpoints were written"), std::string::npos) << message;
+
+  // a history without one: a fresh run
+  dir = tempDir("missing_unrecorded");
+  {
+    HistoryWriter writer(dir + "/history.h5", HistoryAttributes{});
+    writer.appendGeneration({}, HistoryGeneration{});
+  }
+  EXPECT_FALSE(findCheckpoint(dir).has_value());
+}
+
+TEST(Checkpoint, RemoveCheckpointsClearsEveryFile) {
+  std::string dir = tempDir("remove");
+  writeCheckpoint(dir, makeState(1));
+  writeCheckpoint(dir, makeState(2));
+  std::ofstream(checkpointPath(dir) + ".tmp") << "partial";
+  removeCheckpoints(dir);
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(CheckpointSettings, RunOnlyKeysMayChangeOthersMayNot) {
+  std::string changed_out = kConfig;
+  changed_out.replace(changed_out.find("out = a"), 7, "out = b");
+  changed_out.replace(changed_out.find("generations = 5"), 15, "generations = 9");
+  EXPECT_NO_THROW(checkResumeSettings("ck.h5", kConfig, changed_out));
+  EXPECT_EQ(resultConfigHash(kConfig), resultConfigHash(changed_out));
+  EXPECT_NE(configHash(kConfig), configHash(changed_out));
+
+  // a physics key: named with both values
+  std::string changed_step = kConfig;
+  changed_step.replace(changed_step.find("0.004"), 5, "0.002");
+  auto [code, message] = failure([&] { checkResumeSettings("ck.h5", kConfig, changed_step); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("ck.h5"), std::string::npos) << message;
+  EXPECT_NE(message.find("physics.time_step was '0.004'"), std::string::npos) << message;
+  EXPECT_NE(message.find("'0.002' now"), std::string::npos) << message;
+  EXPECT_NE(resultConfigHash(kConfig), resultConfigHash(changed_step));
+
+  // the seed, and a key one side lacks
+  std::string changed_seed = kConfig;
+  changed_seed.replace(changed_seed.find("seed = 9"), 8, "seed = 10");
+  std::tie(code, message) = failure([&] { checkResumeSettings("ck.h5", kConfig, changed_seed); });
+  EXPECT_NE(message.find("run.seed"), std::string::npos) << message;
+  std::tie(code, message) =
+      failure([&] { checkResumeSettings("ck.h5", kConfig, kConfig + "\n[task]\nname = walk\n"); });
+  EXPECT_NE(message.find("task.name was (absent)"), std::string::npos) << message;
+}
+
+TEST(CheckpointSettings, ParsesConfigText) {
+  auto settings = settingsOfConfigText(kConfig);
+  EXPECT_EQ(settings.at("physics.time_step"), "0.004");
+  EXPECT_EQ(settings.at("run.out"), "a");
+  EXPECT_TRUE(isRunOnlySetting("run.max_hours"));
+  EXPECT_FALSE(isRunOnlySetting("run.seed"));
+  EXPECT_FALSE(isRunOnlySetting("evolution.population"));
+  EXPECT_EQ(resultConfigText(kConfig).find("out = a"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cambrian
