@@ -1,0 +1,88 @@
+"""Tests of analysis/scaling_model.py: the discrete-event model against cases with known
+answers (zero overhead, pure latency, largest first, barrier), the calibration from the
+fixture history, and the command line with a measured sweep."""
+
+import numpy as np
+import pytest
+
+import scaling_model as sm
+
+PNG = b"\x89PNG\r\n\x1a\n"
+
+
+# with no overhead and P divisible by W, the speedup is exactly W
+@pytest.mark.parametrize("workers", [1, 2, 4, 5, 10, 20, 100])
+def test_zero_overhead_gives_ideal_speedup(workers):
+    calibration = sm.Calibration(cost_mean=0.01, serial=0.0, latency=0.0, evaluated_share=1.0)
+    rows = sm.project(calibration, [100], [1, workers], samples=2)
+    assert rows[-1]["speedup"] == pytest.approx(workers, rel=1e-12)
+    assert rows[-1]["efficiency"] == pytest.approx(1.0)
+
+
+# hand-outs are serial on rank 0: free evaluations take E * L whatever W is
+def test_latency_alone_is_the_dispatch_bound():
+    for workers in (1, 3, 64):
+        assert sm.simulate_span(np.zeros(50), workers, 0.001) == pytest.approx(0.05)
+    assert sm.limit_of(np.zeros(50), 8, 0.001, 0.0) == "dispatch"
+
+
+# largest first: the long evaluation goes first and the rest fill the other worker
+def test_largest_first_schedule():
+    assert sm.simulate_span([1, 3, 1, 1], 2, 0.0) == 3.0
+    assert sm.simulate_span([2, 2, 2, 2, 2], 2, 0.0) == 6.0  # 3 on one worker, 2 on the other
+    assert sm.simulate_span([], 4, 0.1) == 0.0
+
+
+# more workers than evaluations: the slowest creature bounds the generation
+def test_barrier_and_serial_bounds():
+    costs = np.array([5.0, 1.0, 1.0])
+    assert sm.simulate_span(costs, 8, 0.0) == 5.0
+    assert sm.limit_of(costs, 8, 0.0, 0.0) == "barrier"
+    assert sm.generation_time(costs, 8, 0.0, 2.5) == 7.5
+    assert sm.limit_of(costs, 8, 0.0, 10.0) == "serial"
+    assert sm.limit_of(np.ones(100), 2, 0.0, 0.0) == "work"
+
+
+# with overhead, efficiency falls with W and speedup never exceeds W
+def test_projection_with_overhead_is_sub_linear():
+    calibration = sm.Calibration(cost_mean=0.01, cost_cv=0.5, serial=0.002, latency=1e-4, evaluated_share=0.8)
+    rows = sm.project(calibration, [300], [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024], samples=3)
+    efficiency = [r["efficiency"] for r in rows]
+    assert all(r["speedup"] <= r["workers"] + 1e-9 for r in rows)
+    assert efficiency[-1] < 0.5 < efficiency[1]
+    assert rows[-1]["limit"] in ("dispatch", "barrier", "serial") and rows[1]["limit"] == "work"
+
+
+# calibration from the fixture history gives sane figures
+def test_calibration_from_history(run_history):
+    calibration = sm.calibrate(run_history)
+    assert len(calibration.costs) > 0 and np.all(calibration.costs >= 0)
+    assert calibration.serial >= 0 and calibration.latency >= 0
+    assert 0 < calibration.evaluated_share <= 1
+    draws = calibration.draw(100, np.random.default_rng(1))
+    assert set(draws) <= set(calibration.costs)
+
+
+# the command line compares the model with the fixture sweep
+def test_command_line_with_sweep(sweep_dir, run_script, tmp_path):
+    result = run_script("scaling_model", "--sweep", sweep_dir, "--max-workers", 64, "--populations", 100, 300,
+                        "--samples", 2, "--output", tmp_path / "m.png", "--table", tmp_path / "m.tsv")
+    assert result.returncode == 0, result.stderr
+    assert (tmp_path / "m.png").read_bytes()[:8] == PNG
+    assert "model vs measured" in result.stdout
+    compared = result.stdout.split("model vs measured")[1].splitlines()[2:4]
+    assert [line.split("\t")[0] for line in compared] == ["1", "2"]
+    assert len((tmp_path / "m.tsv").read_text().splitlines()) == 1 + 2 * 7
+
+
+def test_parameters_and_errors(tmp_path, capsys):
+    assert sm.main(["--cost-mean", "0.01", "--max-workers", "4", "--output", str(tmp_path / "p.png")]) == 0
+    assert "efficiency below 50 %" in capsys.readouterr().out
+    with pytest.raises(SystemExit) as exit_:
+        sm.main([])  # nothing to calibrate from
+    assert exit_.value.code == 2
+    with pytest.raises(SystemExit) as exit_:
+        sm.main(["--cost-mean", "-1"])
+    assert exit_.value.code == 2
+    assert sm.main(["--history", str(tmp_path / "nope.h5")]) == 4
+    assert "nope.h5" in capsys.readouterr().err
