@@ -18,6 +18,8 @@ enum class ExitCode : int {
   mpi = 7,             ///< wrong rank count or an MPI-level failure (rank named in the message)
   worker_failure = 8,  ///< a worker rank hit an unrecoverable error
   interrupted = 9,     ///< stopped by a signal before a clean checkpoint could be written
+  /// a replayed creature's outcome differs from the one its history stores (cambrian replay)
+  replay_mismatch = 10,
 };
 
 /// Base of all cambrian errors: a message for people and the exit code for the process.

@@ -6,6 +6,7 @@
 #include "cambrian/outcome.hpp"
 
 #include <cstdint>
+#include <span>
 #include <string>
 
 namespace cambrian {
@@ -60,9 +61,59 @@ const char* taskName(TaskKind kind);
 bool isViable(const Genome& genome, const GenomeLimits& limits, const PhysicsSettings& physics,
               std::string* reason = nullptr);
 
+/// The phases of an evaluation, in the order they run (jump and synthetic skip trial and
+/// resettle).
+enum class EvalPhase : std::uint8_t {
+  settle,    ///< brain off, the body comes to rest
+  trial,     ///< brain on, not measured (walk)
+  resettle,  ///< brain off again (walk)
+  measure,   ///< brain on, the juries watch
+};
+
+/// Lower-case phase name ("settle", "trial", "resettle", "measure"); "unknown" otherwise.
+constexpr const char* phaseName(EvalPhase phase) {
+  switch (phase) {
+    case EvalPhase::settle:
+      return "settle";
+    case EvalPhase::trial:
+      return "trial";
+    case EvalPhase::resettle:
+      return "resettle";
+    case EvalPhase::measure:
+      return "measure";
+  }
+  return "unknown";
+}
+
+/// What a FrameObserver sees of one frame. `poses` is only valid during the call.
+struct EvalFrame {
+  std::uint64_t step = 0;               ///< physics steps taken before this frame (0: at birth)
+  double time = 0;                      ///< simulated time, s (step * time step)
+  EvalPhase phase = EvalPhase::settle;  ///< phase of the step that led here (settle at birth)
+  Vec3 center_of_mass;                  ///< mass-weighted centre of the parts, world frame, m
+  std::span<const Transform> poses;     ///< world pose of every part, BodyPlan order
+};
+
+/// Watches an evaluation, e.g. to record a trajectory for rendering. It only reads: an
+/// evaluation gives bit-identical outcomes with and without an observer.
+class FrameObserver {
+ public:
+  virtual ~FrameObserver() = default;
+  /// Steps between two frames, >= 1 (1: every step); read once, before the world is built.
+  virtual std::uint64_t frameStride() const = 0;
+  /// Called once the world is built, before the first frame; never for a creature that does not
+  /// reach the physics (invalid genome, no parts, synthetic task). `plan` outlives the frames.
+  virtual void begin(const BodyPlan& plan, const PhysicsSettings& physics) = 0;
+  /// Called at birth (step 0) and after every frameStride()-th step while every rule holds.
+  virtual void frame(const EvalFrame& frame) = 0;
+};
+
 /// Evaluates one creature in a fresh world. Never throws for a bad creature: a rule-breaking
 /// creature gets a status and kWorstFitness. `eval_seed` feeds any randomness inside.
+/// `observer`, when not null, is shown the world every frameStride() steps; it does not change
+/// the outcome, and without one the evaluation does no extra work.
 Outcome evaluate(const Genome& genome, const GenomeLimits& limits, const TaskSettings& task,
-                 const PhysicsSettings& physics, std::uint64_t eval_seed = 0);
+                 const PhysicsSettings& physics, std::uint64_t eval_seed = 0,
+                 FrameObserver* observer = nullptr);
 
 }  // namespace cambrian

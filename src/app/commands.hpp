@@ -9,5 +9,9 @@ int runSimulate(int argc, char** argv);
 int runInspect(int argc, char** argv);
 /// `cambrian evolve`: the MPI evolution (rank 0 breeds, other ranks evaluate).
 int runEvolve(int argc, char** argv);
+/// `cambrian replay`: re-simulates a creature of a history file; 0 when its outcome is
+/// bit-identical to the stored one, ExitCode::replay_mismatch when not. `--export` writes its
+/// trajectory.
+int runReplay(int argc, char** argv);
 
 }  // namespace cambrian

@@ -18,6 +18,7 @@ void printUsage(std::ostream& out) {
       << "commands:\n"
       << "  evolve     run an evolution: mpirun -np N cambrian evolve --config FILE\n"
       << "  simulate   evaluate one creature and print its outcome\n"
+      << "  replay     re-simulate a creature of a history.h5 bit for bit; export its trajectory\n"
       << "  inspect    print a genome and its body statistics\n"
       << "  version    print the version and git hash\n";
 }
@@ -40,6 +41,8 @@ int main(int argc, char** argv) {
       return cambrian::runInspect(argc - 1, argv + 1);
     if (command == "evolve")
       return cambrian::runEvolve(argc - 1, argv + 1);
+    if (command == "replay")
+      return cambrian::runReplay(argc - 1, argv + 1);
     if (command == "version" || command == "--version") {
       std::cout << "cambrian " << cambrian::kVersion << " (" << cambrian::kGitHash << ")\n";
       return 0;

@@ -5,22 +5,25 @@
 
 #include "commands.hpp"
 #include "options.hpp"
+#include "store/trajectory.hpp"
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 namespace cambrian {
 
 int runSimulate(int argc, char** argv) {
   CreatureSettings settings;
-  std::string genome_path, config_path, task_name, save_path;
+  std::string genome_path, config_path, task_name, save_path, export_path;
   std::uint64_t seed = 1;
+  double frame_rate = 30;
 
   // command-line-only options; settings come from creatureOptions()
   po::options_description cli(
       "cambrian simulate: evaluate one creature\n\n"
       "usage: cambrian simulate (--genome FILE | --random [--seed N]) "
-      "[--task walk|jump|synthetic] [--config FILE] [settings]\n\n"
+      "[--task walk|jump|synthetic] [--config FILE] [--export traj.h5] [settings]\n\n"
       "Options");
   cli.add_options()("help,h", "show this help")("genome,g", po::value(&genome_path),
                                                 "genome file (text or binary)")(
@@ -28,7 +31,11 @@ int runSimulate(int argc, char** argv) {
                                                     "seed of the random genome and evaluation")(
       "task", po::value(&task_name), "task: walk | jump | synthetic (same as --task.name)")(
       "config,c", po::value(&config_path), "INI file with settings (command line wins)")(
-      "save", po::value(&save_path), "write the evaluated genome to this file (text form)");
+      "save", po::value(&save_path), "write the evaluated genome to this file (text form)")(
+      "export", po::value(&export_path),
+      "write the trajectory (per-frame part poses, HDF5) for analysis/animate.py")(
+      "frame-rate", po::value(&frame_rate)->default_value(frame_rate),
+      "frames per simulated second in the export, Hz");
   po::options_description creature = creatureOptions(settings);
   po::variables_map vm = parseOptions(argc, argv, cli, creature, nullptr);
   if (vm.count("help")) {
@@ -47,9 +54,15 @@ int runSimulate(int argc, char** argv) {
   Genome genome = random ? randomGenome(settings.limits, seed) : readGenomeFile(genome_path);
   if (!save_path.empty())
     writeGenomeFile(save_path, genome);
+  if (!export_path.empty() && settings.task.kind == TaskKind::synthetic)
+    throw Error(ExitCode::usage, "--export: the synthetic task has no bodies to record");
 
-  // evaluate and report
-  Outcome outcome = evaluate(genome, settings.limits, settings.task, settings.physics, seed);
+  // evaluate (observed when exporting: the outcome is the same) and report
+  std::optional<TrajectoryRecorder> recorder;
+  if (!export_path.empty())
+    recorder.emplace(frameStrideFor(frame_rate, settings.physics.time_step));
+  Outcome outcome = evaluate(genome, settings.limits, settings.task, settings.physics, seed,
+                             recorder ? &*recorder : nullptr);
   std::printf("creature   %s\n",
               random ? ("random, seed " + std::to_string(seed)).c_str() : genome_path.c_str());
   std::printf("body       %d parts, %d joints, %d neurons\n", outcome.parts, outcome.joints,
@@ -64,6 +77,20 @@ int runSimulate(int argc, char** argv) {
   std::printf("steps      %llu\n", static_cast<unsigned long long>(outcome.steps));
   std::printf("wall time  %.4f s (%.0f steps/s)\n", outcome.wall_seconds,
               outcome.wall_seconds > 0 ? outcome.steps / outcome.wall_seconds : 0.0);
+
+  // the trajectory, with where the creature came from
+  if (recorder) {
+    Trajectory trajectory = recorder->take();
+    trajectory.source = random ? "random genome, seed " + std::to_string(seed) : genome_path;
+    trajectory.fitness = outcome.fitness;
+    trajectory.status = statusName(outcome.status);
+    trajectory.task = taskName(settings.task.kind);
+    trajectory.time_step = settings.physics.time_step;
+    trajectory.genome_text = genomeToText(genome);
+    writeTrajectory(export_path, trajectory);
+    std::printf("export     %s (%zu frames of %zu parts at %g Hz)\n", export_path.c_str(),
+                trajectory.frameCount(), trajectory.partCount(), trajectory.frame_rate);
+  }
   return 0;
 }
 

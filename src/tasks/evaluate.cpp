@@ -6,9 +6,11 @@
 #include "tasks/juries.hpp"
 #include "tasks/synthetic.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <vector>
 
 namespace cambrian {
 
@@ -21,15 +23,37 @@ std::uint64_t stepsIn(double seconds, double time_step) {
   return static_cast<std::uint64_t>(std::llround(seconds / time_step));
 }
 
+// a frame observer and the pose buffer it is shown (allocated once, only when observing)
+struct Watch {
+  FrameObserver* observer = nullptr;
+  std::uint64_t stride = 1;
+  std::vector<Transform> poses;
+
+  // shows the observer the world as it is now
+  void show(const Simulation& simulation, EvalPhase phase) {
+    simulation.partPoses(poses);
+    EvalFrame frame;
+    frame.step = simulation.steps();
+    frame.time = simulation.time();
+    frame.phase = phase;
+    frame.center_of_mass = simulation.centerOfMass();
+    frame.poses = poses;
+    observer->frame(frame);
+  }
+};
+
 // runs `steps` steps; false when a rule broke or the wall-clock bound passed
 bool runPhase(Simulation& simulation, std::uint64_t steps, bool brain_on, Jury* jury,
-              Clock::time_point deadline, bool bounded) {
+              Clock::time_point deadline, bool bounded, EvalPhase phase, Watch* watch) {
   for (std::uint64_t s = 0; s < steps; ++s) {
     simulation.step(brain_on);
     if (simulation.status() != EvalStatus::ok)
       return false;
     if (jury)
       jury->observe(simulation);
+    // a frame for the observer, if any (it only reads)
+    if (watch && simulation.steps() % watch->stride == 0)
+      watch->show(simulation, phase);
     // wall-clock bound, looked at every 256 steps
     if (bounded && (simulation.steps() & 255) == 0 && Clock::now() > deadline)
       return false;
@@ -47,7 +71,7 @@ Outcome failure(EvalStatus status, const std::string& message) {
 }
 
 Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task, const PhysicsSettings& physics,
-                     Clock::time_point start) {
+                     Clock::time_point start, FrameObserver* observer) {
   Outcome outcome;
   outcome.parts = static_cast<int>(plan.parts.size());
   outcome.joints = plan.jointCount();
@@ -71,18 +95,30 @@ Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task, const Physi
     }
     return result;
   };
+
+  // the observer sees the body at birth, then every stride steps
+  Watch watch_storage;
+  Watch* watch = nullptr;
+  if (observer) {
+    watch = &watch_storage;
+    watch->observer = observer;
+    watch->stride = std::max<std::uint64_t>(1, observer->frameStride());
+    observer->begin(plan, physics);
+    watch->show(simulation, EvalPhase::settle);
+  }
   if (simulation.status() != EvalStatus::ok)
     return finish(outcome);
 
   // Chaumont's start-up: settle brain off, trial brain on, settle again (walk);
   // jump: settle only
   const double dt = physics.time_step;
-  bool alive =
-      runPhase(simulation, stepsIn(task.settle_time, dt), false, nullptr, deadline, bounded);
+  bool alive = runPhase(simulation, stepsIn(task.settle_time, dt), false, nullptr, deadline,
+                        bounded, EvalPhase::settle, watch);
   if (alive && task.kind == TaskKind::walk) {
-    alive =
-        runPhase(simulation, stepsIn(task.trial_time, dt), true, nullptr, deadline, bounded) &&
-        runPhase(simulation, stepsIn(task.resettle_time, dt), false, nullptr, deadline, bounded);
+    alive = runPhase(simulation, stepsIn(task.trial_time, dt), true, nullptr, deadline, bounded,
+                     EvalPhase::trial, watch) &&
+            runPhase(simulation, stepsIn(task.resettle_time, dt), false, nullptr, deadline, bounded,
+                     EvalPhase::resettle, watch);
   }
   if (!alive)
     return finish(outcome);
@@ -92,7 +128,8 @@ Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task, const Physi
   HeightJury height;
   Jury* jury = task.kind == TaskKind::walk ? static_cast<Jury*>(&distance) : &height;
   jury->begin(simulation);
-  alive = runPhase(simulation, stepsIn(task.evaluation_time, dt), true, jury, deadline, bounded);
+  alive = runPhase(simulation, stepsIn(task.evaluation_time, dt), true, jury, deadline, bounded,
+                   EvalPhase::measure, watch);
   if (!alive)
     return finish(outcome);
 
@@ -162,7 +199,7 @@ bool isViable(const Genome& genome, const GenomeLimits& limits, const PhysicsSet
 }
 
 Outcome evaluate(const Genome& genome, const GenomeLimits& limits, const TaskSettings& task,
-                 const PhysicsSettings& physics, std::uint64_t eval_seed) {
+                 const PhysicsSettings& physics, std::uint64_t eval_seed, FrameObserver* observer) {
   auto start = Clock::now();
   Outcome outcome;
   try {
@@ -178,7 +215,7 @@ Outcome evaluate(const Genome& genome, const GenomeLimits& limits, const TaskSet
       if (outcome.message.empty()) {
         BodyPlan plan = develop(genome, limits);
         outcome = plan.parts.empty() ? failure(EvalStatus::invalid_body, "no parts")
-                                     : evaluateBody(plan, task, physics, start);
+                                     : evaluateBody(plan, task, physics, start, observer);
       }
     }
   } catch (const std::exception& e) {

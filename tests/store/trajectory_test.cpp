@@ -1,0 +1,275 @@
+// tests of the trajectory file (traj.h5) and of recording one during an evaluation
+#include "store/trajectory.hpp"
+
+#include "cambrian/error.hpp"
+#include "cambrian/evaluate.hpp"
+#include "cambrian/genome.hpp"
+
+#include "brain/allocation_counter.hpp"
+#include "store/history.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace cambrian {
+namespace {
+
+// a fresh path in the test temp directory
+std::string tempPath(const std::string& name) {
+  std::string path = testing::TempDir() + "/cambrian_trajectory_test_" + name;
+  std::filesystem::remove(path);
+  return path;
+}
+
+// a small made-up trajectory: 3 parts, 5 frames, every value distinct
+Trajectory makeTrajectory() {
+  Trajectory t;
+  t.creature_id = 42;
+  t.source = "run/history.h5";
+  t.fitness = 1.0 / 3.0;
+  t.status = "ok";
+  t.task = "walk";
+  t.time_step = 1.0 / 240.0;
+  t.frame_stride = 8;
+  t.frame_rate = 30;
+  t.genome_text = "cambrian-genome 1\nnode 0 size 1 1 1\n";
+  t.half_extents = {{0.3, 0.15, 0.075}, {0.15, 0.05, 0.05}, {0.15, 0.05, 0.05}};
+  t.parent = {-1, 0, 0};
+  const EvalPhase phases[] = {EvalPhase::settle, EvalPhase::trial, EvalPhase::resettle,
+                              EvalPhase::measure, EvalPhase::measure};
+  for (int f = 0; f < 5; ++f) {
+    t.time.push_back(f * 8 * t.time_step);
+    t.step.push_back(static_cast<std::uint64_t>(f) * 8);
+    t.phase.push_back(phases[f]);
+    t.center_of_mass.push_back({0.1 * f, -0.01 * f, 0.2 + 0.001 * f});
+    for (int p = 0; p < 3; ++p) {
+      Transform pose;
+      pose.position = {f + 0.1 * p, f - 0.2 * p, 0.5 + p};
+      pose.rotation = {0.5, 0.5 + 0.01 * f, -0.5, 0.5 - 0.01 * p};
+      t.poses.push_back(pose);
+    }
+  }
+  return t;
+}
+
+// the same bits, field by field
+void expectSame(const Trajectory& a, const Trajectory& b) {
+  EXPECT_EQ(a.creature_id, b.creature_id);
+  EXPECT_EQ(a.source, b.source);
+  EXPECT_EQ(std::memcmp(&a.fitness, &b.fitness, sizeof a.fitness), 0);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.task, b.task);
+  EXPECT_EQ(a.time_step, b.time_step);
+  EXPECT_EQ(a.frame_stride, b.frame_stride);
+  EXPECT_EQ(a.frame_rate, b.frame_rate);
+  EXPECT_EQ(a.genome_text, b.genome_text);
+  EXPECT_EQ(a.half_extents, b.half_extents);
+  EXPECT_EQ(a.parent, b.parent);
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_EQ(a.step, b.step);
+  EXPECT_EQ(a.phase, b.phase);
+  EXPECT_EQ(a.center_of_mass, b.center_of_mass);
+  ASSERT_EQ(a.poses.size(), b.poses.size());
+  for (std::size_t i = 0; i < a.poses.size(); ++i) {
+    EXPECT_EQ(a.poses[i].position, b.poses[i].position) << "pose " << i;
+    EXPECT_EQ(a.poses[i].rotation, b.poses[i].rotation) << "pose " << i;
+  }
+}
+
+// the exit code of what `action` throws, or -1
+template <class Action>
+int thrownCode(Action action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return static_cast<int>(e.code());
+  }
+  return -1;
+}
+
+// every field survives a write and a read, bit for bit; no temporary file is left behind
+TEST(Trajectory, RoundTrip) {
+  std::string path = tempPath("round_trip.h5");
+  Trajectory written = makeTrajectory();
+  writeTrajectory(path, written);
+  expectSame(readTrajectory(path), written);
+  for (const auto& entry : std::filesystem::directory_iterator(testing::TempDir())) {
+    EXPECT_EQ(entry.path().filename().string().find("cambrian_trajectory_test_round_trip.h5.tmp"),
+              std::string::npos);
+  }
+}
+
+// writing over an existing file replaces it whole
+TEST(Trajectory, OverwriteReplaces) {
+  std::string path = tempPath("overwrite.h5");
+  writeTrajectory(path, makeTrajectory());
+  Trajectory smaller = makeTrajectory();
+  smaller.time.resize(2);
+  smaller.step.resize(2);
+  smaller.phase.resize(2);
+  smaller.center_of_mass.resize(2);
+  smaller.poses.resize(6);
+  smaller.creature_id = kNoCreatureId;
+  writeTrajectory(path, smaller);
+  Trajectory read = readTrajectory(path);
+  EXPECT_EQ(read.frameCount(), 2u);
+  EXPECT_EQ(read.creature_id, kNoCreatureId);
+  expectSame(read, smaller);
+}
+
+// a body without frames (it never moved) is still a valid file
+TEST(Trajectory, NoFrames) {
+  std::string path = tempPath("no_frames.h5");
+  Trajectory t = makeTrajectory();
+  t.time.clear();
+  t.step.clear();
+  t.phase.clear();
+  t.center_of_mass.clear();
+  t.poses.clear();
+  writeTrajectory(path, t);
+  Trajectory read = readTrajectory(path);
+  EXPECT_EQ(read.frameCount(), 0u);
+  EXPECT_EQ(read.partCount(), 3u);
+}
+
+// arrays of different lengths are refused before anything is written
+TEST(Trajectory, InconsistentArraysAreRefused) {
+  std::string path = tempPath("inconsistent.h5");
+  Trajectory t = makeTrajectory();
+  t.poses.pop_back();
+  EXPECT_EQ(thrownCode([&] { writeTrajectory(path, t); }), static_cast<int>(ExitCode::failure));
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+// an unwritable place is an output error naming the path
+TEST(Trajectory, UnwritablePath) {
+  std::string path = testing::TempDir() + "/no_such_directory_for_trajectories/t.h5";
+  try {
+    writeTrajectory(path, makeTrajectory());
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::output_file);
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+}
+
+// missing, non-HDF5 and foreign files are input errors naming the file
+TEST(Trajectory, BadFiles) {
+  auto expectInputError = [](const std::string& path, const std::string& words) {
+    try {
+      readTrajectory(path);
+      ADD_FAILURE() << path << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  expectInputError(tempPath("missing.h5"), "no such trajectory file");
+  std::string text = tempPath("text.h5");
+  std::ofstream(text) << "not hdf5 at all\n";
+  expectInputError(text, "not an HDF5 file");
+  std::string history = tempPath("history.h5");
+  { HistoryWriter writer(history, HistoryAttributes{}); }
+  expectInputError(history, "not a cambrian trajectory");
+}
+
+// the stride for a frame rate: nearest whole number of steps, at least one
+TEST(Trajectory, FrameStride) {
+  EXPECT_EQ(frameStrideFor(30, 1.0 / 240), 8u);
+  EXPECT_EQ(frameStrideFor(60, 1.0 / 240), 4u);
+  EXPECT_EQ(frameStrideFor(1000, 1.0 / 240), 1u);
+  EXPECT_EQ(thrownCode([] { frameStrideFor(0, 1.0 / 240); }), static_cast<int>(ExitCode::config));
+  EXPECT_EQ(thrownCode([] { frameStrideFor(-5, 1.0 / 240); }), static_cast<int>(ExitCode::config));
+}
+
+// a hand-written walker, short walk task
+struct Walker {
+  Genome genome =
+      readGenomeFile(std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/walker4.genome");
+  GenomeLimits limits;
+  PhysicsSettings physics;
+  TaskSettings task;
+  Walker() {
+    task.settle_time = 0.25;
+    task.trial_time = 0.25;
+    task.resettle_time = 0.25;
+    task.evaluation_time = 0.5;
+  }
+};
+
+// recording changes nothing: the outcome is bit-identical with and without an observer
+TEST(TrajectoryRecorder, ObservingDoesNotChangeTheOutcome) {
+  Walker w;
+  Outcome plain = evaluate(w.genome, w.limits, w.task, w.physics, 7);
+  TrajectoryRecorder recorder(3);
+  Outcome observed = evaluate(w.genome, w.limits, w.task, w.physics, 7, &recorder);
+  ASSERT_EQ(plain.status, EvalStatus::ok) << plain.message;
+  EXPECT_EQ(std::memcmp(&plain.fitness, &observed.fitness, sizeof plain.fitness), 0)
+      << plain.fitness << " vs " << observed.fitness;
+  EXPECT_EQ(plain.measures, observed.measures);
+  EXPECT_EQ(plain.steps, observed.steps);
+}
+
+// frames at birth and every stride steps, phases in order, body from the plan
+TEST(TrajectoryRecorder, FramesAndPhases) {
+  Walker w;
+  const std::uint64_t stride = 6;
+  TrajectoryRecorder recorder(stride);
+  Outcome outcome = evaluate(w.genome, w.limits, w.task, w.physics, 7, &recorder);
+  ASSERT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
+  const Trajectory& t = recorder.trajectory();
+  BodyPlan plan = develop(w.genome, w.limits);
+  ASSERT_EQ(t.partCount(), plan.parts.size());
+  for (std::size_t p = 0; p < plan.parts.size(); ++p) {
+    EXPECT_EQ(t.half_extents[p], plan.parts[p].size * 0.5);
+    EXPECT_EQ(t.parent[p], plan.parts[p].parent);
+  }
+  ASSERT_EQ(t.frameCount(), outcome.steps / stride + 1);
+  EXPECT_EQ(t.poses.size(), t.frameCount() * t.partCount());
+  EXPECT_EQ(t.step.front(), 0u);
+  EXPECT_EQ(t.time.front(), 0.0);
+  EXPECT_EQ(t.frame_stride, stride);
+  EXPECT_DOUBLE_EQ(t.frame_rate, 1.0 / (stride * w.physics.time_step));
+  for (std::size_t f = 1; f < t.frameCount(); ++f) {
+    EXPECT_EQ(t.step[f], t.step[f - 1] + stride);
+    EXPECT_LE(t.phase[f - 1], t.phase[f]) << "frame " << f;
+  }
+  EXPECT_EQ(t.phase.back(), EvalPhase::measure);
+  // the creature stands on the ground: every part's centre above it
+  for (const Transform& pose : t.poses)
+    EXPECT_GT(pose.position.z, 0.0);
+}
+
+// without an observer, a longer evaluation allocates no more than a shorter one: no heap
+// allocation per step on the plain path
+TEST(TrajectoryRecorder, PlainPathDoesNotAllocatePerStep) {
+  Walker w;
+  auto allocations = [&](double seconds) {
+    TaskSettings task = w.task;
+    task.evaluation_time = seconds;
+    long before = allocationCount();
+    Outcome outcome = evaluate(w.genome, w.limits, task, w.physics, 7);
+    EXPECT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
+    return allocationCount() - before;
+  };
+  allocations(0.5);  // warm up anything lazily made once per process
+  EXPECT_EQ(allocations(0.5), allocations(1.5));
+}
+
+// a creature that never reaches the physics shows no body and no frames
+TEST(TrajectoryRecorder, InvalidCreatureRecordsNothing) {
+  Walker w;
+  GenomeLimits tight = w.limits;
+  tight.max_nodes = 1;
+  TrajectoryRecorder recorder(4);
+  Outcome outcome = evaluate(w.genome, tight, w.task, w.physics, 7, &recorder);
+  EXPECT_EQ(outcome.status, EvalStatus::invalid_body);
+  EXPECT_EQ(recorder.trajectory().partCount(), 0u);
+  EXPECT_EQ(recorder.trajectory().frameCount(), 0u);
+}
+
+}  // namespace
+}  // namespace cambrian
