@@ -67,6 +67,8 @@ def parse_arguments(argv):
     parser.add_argument("--sweep", nargs="*", default=None,
                         help="sweep directories or histories to compare with (and to calibrate from, "
                         "the run with the fewest workers, when --history is not given)")
+    parser.add_argument("--mode", choices=("strong", "weak"), default="strong",
+                        help="how the --sweep was run: speedups of the comparison are fixed-size (strong) or scaled (weak)")
     parser.add_argument("--cost-mean", type=float, default=None, help="mean evaluation cost, s (instead of the history's)")
     parser.add_argument("--cost-cv", type=float, default=0.0, help="coefficient of variation of the lognormal cost (default 0)")
     parser.add_argument("--serial", type=float, default=None, help="rank 0 serial seconds per generation")
@@ -200,9 +202,10 @@ def project(calibration, populations, worker_counts, samples=5, seed=1):
     return rows
 
 
-def compare(calibration, runs, samples=5, seed=1):
-    """Model against every measured point of a sweep: list of dicts per worker count."""
-    rows, _, _ = scaling.points(runs, "strong")
+def compare(calibration, runs, samples=5, seed=1, mode="strong"):
+    """Model against every measured point of a sweep: list of dicts per worker count, each
+    point simulated with its own evaluations per generation; speedups as scaling.points."""
+    rows, _, _ = scaling.points(runs, mode)
     evaluations = {}
     for run in runs:
         evaluations.setdefault(run["workers"], []).append(run["evaluations"])
@@ -214,9 +217,9 @@ def compare(calibration, runs, samples=5, seed=1):
         model = float(np.mean([generation_time(c, row["workers"], calibration.latency, calibration.serial) for c in draws]))
         out.append({"workers": row["workers"], "measured": row["time_median"], "model": model,
                     "measured_speedup": row["speedup"]})
-    base = out[0]["model"] * out[0]["workers"] if out else 1.0
     for o in out:
-        o["model_speedup"] = base / o["model"]
+        p0, t0 = out[0]["workers"], out[0]["model"]
+        o["model_speedup"] = (p0 if mode == "strong" else o["workers"]) * t0 / o["model"]
         o["error"] = (o["model"] - o["measured"]) / o["measured"]
     return out
 
@@ -299,7 +302,7 @@ def main(argv=None):
     # model against the measured sweep
     measured = None
     if runs:
-        measured = compare(calibration, runs, arguments.samples, arguments.seed)
+        measured = compare(calibration, runs, arguments.samples, arguments.seed, arguments.mode)
         print("# model vs measured (median generation seconds, generations >= skip)")
         print("workers\tmeasured_seconds\tmodel_seconds\trelative_error\tmeasured_speedup\tmodel_speedup")
         for m in measured:

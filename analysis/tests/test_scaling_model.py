@@ -86,3 +86,15 @@ def test_parameters_and_errors(tmp_path, capsys):
     assert exit_.value.code == 2
     assert sm.main(["--history", str(tmp_path / "nope.h5")]) == 4
     assert "nope.h5" in capsys.readouterr().err
+
+
+# the comparison of a weak sweep uses scaled speedups: p * T(1) / T(p)
+def test_compare_weak_sweep_uses_scaled_speedup():
+    calibration = sm.Calibration(cost_mean=0.01, serial=0.0, latency=0.0, evaluated_share=1.0)
+    runs = [{"path": f"w{p}", "workers": p, "population": 10 * p, "generations": 3, "time": 0.1,
+             "times": np.array([0.1]), "rank0_share": 0.0, "evaluations": 10.0 * p, "rank0_serial": 0.0}
+            for p in (1, 2, 4)]
+    out = sm.compare(calibration, runs, samples=1, mode="weak")
+    assert [o["model_speedup"] for o in out] == pytest.approx([1.0, 2.0, 4.0])
+    assert [o["measured_speedup"] for o in out] == pytest.approx([1.0, 2.0, 4.0])
+    assert all(abs(o["error"]) < 1e-9 for o in out)
