@@ -17,7 +17,7 @@ set -euo pipefail
 mode=$1 cambrian=$2 mpiexec=$3 npflag=$4 np=$5 work=$6 compare=$7
 rm -rf "$work" && mkdir -p "$work"
 
-# one evolve job at N ranks
+# one evolve job at N ranks (exec: in a background subshell, $! is then the job itself)
 job() {
   local n=$1
   shift
@@ -25,6 +25,15 @@ job() {
     "$cambrian" evolve "$@"
   else
     "$mpiexec" "$npflag" "$n" --oversubscribe "$cambrian" evolve "$@"
+  fi
+}
+job_exec() {
+  local n=$1
+  shift
+  if [ "$n" -eq 1 ]; then
+    exec "$cambrian" evolve "$@"
+  else
+    exec "$mpiexec" "$npflag" "$n" --oversubscribe "$cambrian" evolve "$@"
   fi
 }
 
@@ -111,8 +120,8 @@ case $mode in
     # slower generations, so the signal lands mid-run; SIGUSR1 to the job (mpiexec forwards it)
     sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 20000/' "$work/run.ini"
     straight slow_straight
-    job "$np" --config "$work/run.ini" --out "$work/stopped" --run.quiet false \
-      > "$work/stopped.first.txt" 2> "$work/stopped.err" &
+    (job_exec "$np" --config "$work/run.ini" --out "$work/stopped" --run.quiet false \
+      > "$work/stopped.first.txt" 2> "$work/stopped.err") &
     pid=$!
     for _ in $(seq 1 600); do
       grep -q '^gen 2/' "$work/stopped.first.txt" 2> /dev/null && break
@@ -129,8 +138,10 @@ case $mode in
     grep -q "stopped by SIGUSR1 after .* run the same command again" "$work/stopped.first.txt"
     grep -q '^digest_so_far ' "$work/stopped.first.txt"
     [ -s "$work/stopped/checkpoint.h5" ]
-    # workers survived: no error from any rank
-    ! grep -i -e "error" -e "signal" "$work/stopped.err"
+    # workers survived: no error from any rank, no rank ended by the signal
+    if grep -i -e "error" -e "terminated" -e "exited on signal" "$work/stopped.err"; then
+      exit 1
+    fi
     job "$np" --config "$work/run.ini" --out "$work/stopped" > "$work/stopped.txt"
     same slow_straight stopped
     ;;
@@ -176,7 +187,9 @@ case $mode in
     same straight again
     # --fresh starts over
     job "$np" --config "$work/run.ini" --out "$work/changed" --fresh > "$work/fresh.txt"
-    ! grep -q "resuming" "$work/fresh.txt"
+    if grep "resuming" "$work/fresh.txt"; then
+      exit 1
+    fi
     rm -rf "$work/fresh" && cp -r "$work/changed" "$work/fresh"
     same straight fresh
     # raising evolution.generations extends a finished run

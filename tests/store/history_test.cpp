@@ -377,3 +377,70 @@ TEST(History, ConfigHashIsStable) {
 
 }  // namespace
 }  // namespace cambrian
+
+namespace cambrian {
+namespace {
+
+TEST(HistoryResume, CutsBackAKilledWritersFileAndAppends) {
+  // a child writes four generations and is killed without closing the file
+  std::string path = tempPath("resume.h5");
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    try {
+      auto* writer = new HistoryWriter(path, makeAttributes());
+      for (int g = 0; g < 4; ++g)
+        writer->appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
+      writer->setCheckpointSeconds(0.5);
+    } catch (...) {
+      _exit(3);
+    }
+    raise(SIGKILL);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+
+  // generations 0 and 1 kept, 2 and 3 dropped, then a new generation 2 appended
+  HistoryRows kept;
+  HistoryAttributes attributes = makeAttributes();
+  attributes.rank_count = 7;
+  auto writer = resumeHistory(path, 2, attributes, kept);
+  ASSERT_EQ(kept.generations.size(), 2u);
+  EXPECT_EQ(kept.individuals.size(), 10u);
+  EXPECT_EQ(kept.individuals[7].genome, makeRows(1, 5)[2].genome);
+  EXPECT_FALSE(std::filesystem::exists(path + ".resume.tmp"));
+  HistoryGeneration next = makeGeneration(2);
+  next.best = 99;
+  writer->appendGeneration(makeRows(2, 5), next);
+  writer->setCheckpointSeconds(0.25);
+  writer->close();
+
+  HistoryReader reader(path);
+  EXPECT_EQ(reader.attributes().rank_count, 7);
+  ASSERT_EQ(reader.generations().size(), 3u);
+  EXPECT_EQ(reader.generations()[2].best, 99.0);
+  EXPECT_EQ(reader.generations()[2].checkpoint_seconds, 0.25);
+  EXPECT_EQ(reader.generations()[1].checkpoint_seconds, 0.0);
+  EXPECT_EQ(reader.individuals().size(), 15u);
+  EXPECT_EQ(reader.genomeBytes(202), makeRows(2, 5)[2].genome);
+}
+
+TEST(HistoryResume, TooFewGenerationsIsAnInputErrorNamingTheFile) {
+  std::string path = tempPath("short.h5");
+  {
+    HistoryWriter writer(path, makeAttributes());
+    writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
+  }
+  HistoryRows kept;
+  try {
+    resumeHistory(path, 3, makeAttributes(), kept);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": holds 1 generation rows"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace cambrian
