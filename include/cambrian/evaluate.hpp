@@ -11,6 +11,16 @@
 
 namespace cambrian {
 
+/// How effector commands move the joints.
+enum class Actuation : std::uint8_t {
+  /// Chaumont et al. 5.3: a velocity motor run at saturation. The command's sign picks the
+  /// direction of a fixed, high target speed and its magnitude the largest torque the motor may
+  /// use (|command| * strength); the constraint solver applies it implicitly with the contacts.
+  saturated_motor,
+  /// Sims: the command times the strength is applied as an explicit joint torque.
+  torque,
+};
+
 /// The physical world an evaluation runs in. Units: SI.
 struct PhysicsSettings {
   double time_step = 1.0 / 240.0;  ///< s, fixed: sensors, brain and monitors run at this rate
@@ -21,6 +31,8 @@ struct PhysicsSettings {
   double restitution = 0.0;
   double joint_damping = 0.05;      ///< N m s / rad, passive damping on every joint
   double strength_per_area = 2000;  ///< N m of torque per m^2 of the smaller cross-section
+  Actuation actuation = Actuation::saturated_motor;  ///< how commands move the joints
+  double motor_speed = 10;                           ///< rad / s, target speed of a saturated motor
   int solver_iterations = 20;
   double max_speed = 50;          ///< m / s: any part faster has exploded
   double max_displacement = 100;  ///< m: any part farther from its start has exploded

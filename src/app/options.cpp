@@ -56,6 +56,8 @@ po::options_description creatureOptions(CreatureSettings& s) {
   physics.add_options()("physics.time_step",
                         po::value(&s.physics.time_step)->default_value(s.physics.time_step),
                         "fixed physics step, s")(
+      "physics.substeps", po::value(&s.physics.substeps)->default_value(s.physics.substeps),
+      "Bullet steps per time step (torques re-applied each)")(
       "physics.gravity", po::value(&s.physics.gravity)->default_value(s.physics.gravity),
       "gravity, m/s^2 (downwards)")(
       "physics.ground_friction",
@@ -70,6 +72,12 @@ po::options_description creatureOptions(CreatureSettings& s) {
       "physics.strength_per_area",
       po::value(&s.physics.strength_per_area)->default_value(s.physics.strength_per_area),
       "joint torque per m^2 of the smaller cross-section, N m/m^2")(
+      "physics.actuation", po::value(&s.actuation_name)->default_value(s.actuation_name),
+      "motor (Chaumont: velocity motor at saturation, torque limit from the command) | torque "
+      "(Sims: explicit joint torque)")(
+      "physics.motor_speed",
+      po::value(&s.physics.motor_speed)->default_value(s.physics.motor_speed),
+      "target speed of a saturated motor, rad/s")(
       "physics.solver_iterations",
       po::value(&s.physics.solver_iterations)->default_value(s.physics.solver_iterations),
       "constraint solver iterations per step")(
@@ -138,6 +146,13 @@ void finishCreatureSettings(CreatureSettings& s) {
     throw ConfigError("task.normalisation = " + s.normalisation_name +
                       ": must be none, chaumont or volume");
   }
+  if (s.actuation_name == "motor") {
+    s.physics.actuation = Actuation::saturated_motor;
+  } else if (s.actuation_name == "torque") {
+    s.physics.actuation = Actuation::torque;
+  } else {
+    throw ConfigError("physics.actuation = " + s.actuation_name + ": must be motor or torque");
+  }
 
   // genome limits
   const GenomeLimits& g = s.limits;
@@ -172,6 +187,8 @@ void finishCreatureSettings(CreatureSettings& s) {
           p.joint_damping, "must be >= 0");
   require(p.strength_per_area >= 0 && std::isfinite(p.strength_per_area),
           "physics.strength_per_area", p.strength_per_area, "must be >= 0");
+  require(p.motor_speed > 0 && std::isfinite(p.motor_speed), "physics.motor_speed", p.motor_speed,
+          "must be > 0");
   require(p.solver_iterations >= 1 && p.solver_iterations <= 1000, "physics.solver_iterations",
           p.solver_iterations, "must be in 1..1000");
   require(p.max_speed > 0, "physics.max_speed", p.max_speed, "must be > 0");

@@ -22,6 +22,7 @@ struct CreatureSettings {
   TaskSettings task;
   std::string task_name = "walk";
   std::string normalisation_name = "none";
+  std::string actuation_name = "motor";
 };
 
 /// Adds the [genome], [physics] and [task] keys, bound to `settings`, with defaults and units.

@@ -4,6 +4,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
@@ -67,9 +68,13 @@ struct BulletWorld {
   std::vector<std::unique_ptr<btBoxShape>> shapes;
   std::vector<std::unique_ptr<PartCollider>> colliders;  // one per part, BodyPlan order
   std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
+  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;  // one per effector (or null)
   std::unique_ptr<btMultiBody> body;
 
   ~BulletWorld() {
+    for (auto& motor : motors)
+      if (motor)
+        world.removeMultiBodyConstraint(motor.get());
     for (auto& limit : limits)
       world.removeMultiBodyConstraint(limit.get());
     for (auto& collider : colliders)
@@ -225,6 +230,19 @@ void Simulation::build(double birth_height) {
     }
   }
 
+  // saturated motors: one per effector, idle (no impulse) until the brain drives it
+  if (settings_.actuation == Actuation::saturated_motor) {
+    for (const EffectorPlan& effector : plan_.effectors) {
+      int link = dof_link_[effector.part][effector.dof];
+      if (link < 0) {
+        b.motors.push_back(nullptr);
+        continue;
+      }
+      b.motors.push_back(std::make_unique<btMultiBodyJointMotor>(&body, link, 0.0, 0.0));
+      b.world.addMultiBodyConstraint(b.motors.back().get());
+    }
+  }
+
   // collider transforms from the zero pose
   btAlignedObjectArray<btQuaternion> world_to_local;
   btAlignedObjectArray<btVector3> local_origin;
@@ -315,18 +333,32 @@ void Simulation::readSensors() {
   }
 }
 
-void Simulation::applyTorques(bool brain_on) {
+void Simulation::applyTorques(bool brain_on, double substep) {
   btMultiBody& body = *bullet_->body;
 
   // passive damping on every revolute link
   for (int link : damped_links_) {
     body.addJointTorque(link, -settings_.joint_damping * body.getJointVel(link));
   }
+
+  // saturated motors: the command's sign picks the target speed, its size the torque budget
+  std::span<const double> commands = brain_.effectors();
+  if (settings_.actuation == Actuation::saturated_motor) {
+    for (std::size_t e = 0; e < bullet_->motors.size(); ++e) {
+      btMultiBodyJointMotor* motor = bullet_->motors[e].get();
+      if (!motor)
+        continue;
+      double command = brain_on ? commands[e] : 0.0;
+      int part = plan_.effectors[e].part;
+      motor->setVelocityTarget(command < 0 ? -settings_.motor_speed : settings_.motor_speed);
+      motor->setMaxAppliedImpulse(std::abs(command) * max_torque_[part] * substep);
+    }
+    return;
+  }
   if (!brain_on)
     return;
 
-  // effector commands scaled by each joint's strength
-  std::span<const double> commands = brain_.effectors();
+  // explicit torques: effector commands scaled by each joint's strength
   for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
     const EffectorPlan& effector = plan_.effectors[e];
     int link = dof_link_[effector.part][effector.dof];
@@ -383,7 +415,7 @@ void Simulation::step(bool brain_on) {
   // each); Bullet clears applied torques after every internal step, so they are re-applied
   const double substep = settings_.time_step / settings_.substeps;
   for (int k = 0; k < settings_.substeps; ++k) {
-    applyTorques(brain_on);
+    applyTorques(brain_on, substep);
     bullet_->world.stepSimulation(substep, 0);
   }
   ++steps_;

@@ -60,7 +60,7 @@ class Simulation {
   void build(double birth_height);
   void checkBirthPenetration();
   void readSensors();
-  void applyTorques(bool brain_on);
+  void applyTorques(bool brain_on, double substep);
   void monitor();
   void fail(EvalStatus status, std::string message);
 

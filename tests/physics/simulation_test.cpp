@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace cambrian {
 namespace {
@@ -103,10 +105,61 @@ TEST(Simulation, EffectorMovesJoint) {
   EXPECT_GT(std::abs(simulation.brain().signals()[0]), 0.05);
 }
 
-// an absurdly strong joint breaks the physics and is caught as a status, not a crash
+// a saturated motor drives its joint no faster than the motor speed
+TEST(Simulation, SaturatedMotorKeepsToItsSpeed) {
+  BodyPlan plan = hinged(1.0);
+  PhysicsSettings settings;
+  settings.gravity = 0;
+  settings.motor_speed = 1.0;
+  Simulation simulation(plan, settings);
+  double previous = 0;
+  for (int s = 0; s < 120; ++s) {
+    simulation.step(true);
+    double angle = simulation.brain().signals()[0];  // joint angle / limit, limit = 1 rad
+    EXPECT_LE(std::abs(angle - previous), 1.02 * settings.motor_speed * settings.time_step)
+        << "step " << s;
+    previous = angle;
+  }
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  EXPECT_GT(std::abs(previous), 0.4);  // it did move, close to 0.5 s at 1 rad/s
+}
+
+// a saturated motor's torque is bounded by |command| * strength: without gravity, a weak
+// command barely turns the limb in half a second, a full one reaches the motor speed
+TEST(Simulation, SaturatedMotorTorqueFollowsTheCommand) {
+  std::array<double, 2> angle{};
+  for (int c = 0; c < 2; ++c) {
+    BodyPlan plan = hinged(c == 0 ? 1e-4 : 1.0);
+    PhysicsSettings settings;
+    settings.gravity = 0;
+    settings.motor_speed = 1.0;
+    Simulation simulation(plan, settings);
+    for (int s = 0; s < 120; ++s)
+      simulation.step(true);
+    ASSERT_EQ(simulation.status(), EvalStatus::ok);
+    angle[c] = std::abs(simulation.brain().signals()[0]);
+  }
+  EXPECT_LT(angle[0], 0.05);
+  EXPECT_GT(angle[1], 0.4);
+}
+
+// under saturated motors even an absurd strength cannot push a joint past the motor speed,
+// so the body stays finite
+TEST(Simulation, SaturatedMotorWithAbsurdStrengthStaysFinite) {
+  BodyPlan plan = hinged(1.0);
+  PhysicsSettings settings;
+  settings.strength_per_area = 1e12;
+  Simulation simulation(plan, settings);
+  for (int s = 0; s < 2400; ++s)
+    simulation.step(true);
+  EXPECT_EQ(simulation.status(), EvalStatus::ok) << simulation.message();
+}
+
+// an absurdly strong explicit torque breaks the physics and is caught as a status, not a crash
 TEST(Simulation, ExplosionIsCaught) {
   BodyPlan plan = hinged(1.0);
   PhysicsSettings settings;
+  settings.actuation = Actuation::torque;
   settings.strength_per_area = 1e12;
   Simulation simulation(plan, settings);
   for (int s = 0; s < 2400 && simulation.status() == EvalStatus::ok; ++s)

@@ -117,10 +117,11 @@ TEST(Evaluate, SelfPenetration) {
   EXPECT_EQ(outcome.fitness, kWorstFitness);
 }
 
-// absurd strength explodes; the monitor catches it
+// absurd explicit torques explode; the monitor catches it
 TEST(Evaluate, Exploded) {
   Genome walker = readGenomeFile(kCreatures + "walker4.genome");
   PhysicsSettings physics;
+  physics.actuation = Actuation::torque;
   physics.strength_per_area = 1e13;
   Outcome outcome = evaluate(walker, GenomeLimits{}, shortWalk(), physics);
   EXPECT_TRUE(outcome.status == EvalStatus::exploded || outcome.status == EvalStatus::non_finite)
@@ -161,6 +162,22 @@ TEST(Evaluate, Normalisations) {
   EXPECT_NE(raw.fitness, by_volume.fitness);
   EXPECT_NE(raw.fitness, by_chaumont.fitness);
   EXPECT_GT(by_chaumont.fitness, 0);
+}
+
+// a two-part creature evolved under explicit torques that gains energy from the integrator
+// (a thin plate driven hard through a spherical joint); a saturated motor takes the gain away
+TEST(Evaluate, SaturatedMotorsDenyTheIntegratorExploit) {
+  Genome exploit = readGenomeFile(std::string(CAMBRIAN_SOURCE_DIR) +
+                                  "/tests/tasks/data/integrator_exploit.genome");
+  TaskSettings task;  // the full 10 s walk it was evolved on
+  PhysicsSettings torque;
+  torque.actuation = Actuation::torque;
+  Outcome with_torque = evaluate(exploit, GenomeLimits{}, task, torque);
+  Outcome with_motor = evaluate(exploit, GenomeLimits{}, task, PhysicsSettings{});
+  ASSERT_EQ(with_motor.status, EvalStatus::ok) << with_motor.message;
+  EXPECT_LT(with_motor.measure("distance"), 1.0);
+  // the fixture still is what it claims to be (about 10 m/s under explicit torques)
+  EXPECT_GT(with_torque.measure("distance"), 20.0);
 }
 
 }  // namespace
