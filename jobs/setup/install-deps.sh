@@ -12,6 +12,7 @@ packages=(
   googletest libgtest-dev
   librandom123-dev
   python3 python3-h5py python3-numpy python3-matplotlib python3-pytest
+  slurm-wlm slurm-client munge
 )
 
 # which packages are missing

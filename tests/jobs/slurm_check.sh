@@ -1,0 +1,203 @@
+#!/usr/bin/env bash
+# Brings up a one-node Slurm cluster on localhost (munged, slurmctld and slurmd from Debian's
+# slurm-wlm and munge, as root, configured in a temporary directory on free ports) and runs
+# jobs/slurm/evolve.sbatch and jobs/slurm/chain.sh on tiny synthetic experiments:
+#   complete:  one job runs an evolution to the end (COMPLETED, exit 0, --max-hours passed,
+#              every generation in the history)
+#   resume:    a chain of three jobs (afterany); the first is stopped by
+#              `scancel --signal=USR1 --batch`, checkpoints and exits 0, the second continues
+#              from the checkpoint, the third finds a finished run; the history is identical
+#              (analysis/compare_histories.py) to a straight run of the same experiment
+# The daemons are stopped on exit, whatever happens; on failure their logs are printed.
+# Run by CTest (label slurm); fails (never skips) when Slurm cannot be started.
+# usage: slurm_check.sh CAMBRIAN SOURCE_DIR WORK_DIR [complete|resume|all]
+set -euo pipefail
+
+if [ "${1:-}" = --help ] || [ $# -lt 3 ]; then
+  sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'
+  [ "${1:-}" = --help ] && exit 0 || exit 2
+fi
+cambrian=$(realpath "$1") source=$(realpath "$2") work=$3 what=${4:-all}
+
+# failure: say why, then the trap prints the logs
+fail() { echo "slurm_check: FAIL: $*" >&2; exit 1; }
+log() { echo "slurm_check: $*"; }
+
+# preconditions: root and the Slurm and munge programs
+[ "$(id -u)" -eq 0 ] || fail "must run as root (the test starts slurmd, which runs jobs as root)"
+for p in munged munge slurmctld slurmd sbatch squeue scontrol sinfo scancel mpirun python3; do
+  command -v "$p" > /dev/null ||
+    fail "'$p' not found: install slurm-wlm, slurm-client and munge (jobs/setup/install-deps.sh)"
+done
+
+# directories: job outputs under WORK_DIR, daemon state in a short /tmp path (socket length)
+rm -rf "$work" && mkdir -p "$work"
+work=$(realpath "$work")
+state=$(mktemp -d /tmp/cambrian-slurm.XXXXXX)
+chmod 755 "$state"
+mkdir -p "$state"/{munge,ctld,spool,log}
+chmod 755 "$state/munge"
+export SLURM_CONF=$state/slurm.conf
+
+# stop everything this script started, by pid; print logs when failing
+cleanup() {
+  local rc=$?
+  set +e
+  trap - EXIT INT TERM
+  if [ -f "$state/slurmctld.pid" ]; then
+    scancel --full --quiet --user root > /dev/null 2>&1
+    for _ in $(seq 1 20); do [ -z "$(squeue -h 2> /dev/null)" ] && break; sleep 0.5; done
+  fi
+  for daemon in slurmd slurmctld munge/munged; do
+    local pidfile=$state/$daemon.pid pid
+    [ -f "$pidfile" ] || continue
+    pid=$(cat "$pidfile")
+    kill "$pid" 2> /dev/null
+    for _ in $(seq 1 20); do kill -0 "$pid" 2> /dev/null || break; sleep 0.25; done
+    kill -9 "$pid" 2> /dev/null
+  done
+  cp -r "$state/log" "$work/daemon-logs" 2> /dev/null
+  if [ "$rc" -ne 0 ]; then
+    for f in "$state"/log/*.log "$state"/munge/munged.log "$work"/*.out; do
+      [ -f "$f" ] || continue
+      echo "----- $f (last 40 lines)"
+      tail -n 40 "$f"
+    done
+    echo "slurm_check: FAILED (exit $rc); logs kept in $work/daemon-logs"
+  fi
+  rm -rf "$state"
+  exit "$rc"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+
+# wait_for SECONDS DESCRIPTION COMMAND...: polls COMMAND every half second until it succeeds
+wait_for() {
+  local limit=$1 what=$2 start=$SECONDS
+  shift 2
+  until "$@" > /dev/null 2>&1; do
+    [ $((SECONDS - start)) -lt "$limit" ] || fail "timed out after ${limit}s waiting for $what"
+    sleep 0.5
+  done
+}
+
+# two free TCP ports on loopback for slurmctld and slurmd
+read -r ctld_port slurmd_port < <(python3 -c '
+import socket
+s = [socket.socket() for _ in range(2)]
+for x in s: x.bind(("127.0.0.1", 0))
+print(*[x.getsockname()[1] for x in s])')
+
+# munged with its own key and socket
+dd if=/dev/urandom of="$state/munge/munge.key" bs=1 count=1024 status=none
+chmod 600 "$state/munge/munge.key"
+munged --socket="$state/munge/munge.sock" --key-file="$state/munge/munge.key" \
+  --log-file="$state/munge/munged.log" --pid-file="$state/munge/munged.pid" \
+  --seed-file="$state/munge/munged.seed" || fail "munged did not start"
+wait_for 10 "munged" munge -n -S "$state/munge/munge.sock"
+
+# slurm.conf: this host as controller and the one node; no cgroups, accounting or systemd
+host=$(hostname -s)
+cat > "$SLURM_CONF" <<EOF
+ClusterName=cambrian-test
+SlurmctldHost=$host(127.0.0.1)
+SlurmctldPort=$ctld_port
+SlurmdPort=$slurmd_port
+SlurmUser=root
+SlurmdUser=root
+AuthType=auth/munge
+CredType=cred/munge
+AuthInfo=socket=$state/munge/munge.sock
+StateSaveLocation=$state/ctld
+SlurmdSpoolDir=$state/spool
+SlurmctldPidFile=$state/slurmctld.pid
+SlurmdPidFile=$state/slurmd.pid
+SlurmctldLogFile=$state/log/slurmctld.log
+SlurmdLogFile=$state/log/slurmd.log
+SlurmctldDebug=info
+SlurmdDebug=info
+SlurmdParameters=config_overrides
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+SelectType=select/cons_tres
+SelectTypeParameters=CR_Core
+AccountingStorageType=accounting_storage/none
+JobAcctGatherType=jobacct_gather/none
+JobCompType=jobcomp/none
+MpiDefault=none
+ReturnToService=2
+SchedulerType=sched/backfill
+KillWait=10
+MinJobAge=600
+NodeName=$host NodeAddr=127.0.0.1 CPUs=4 Boards=1 SocketsPerBoard=1 CoresPerSocket=4 ThreadsPerCore=1 RealMemory=1000 State=UNKNOWN
+PartitionName=debug Nodes=$host Default=YES MaxTime=INFINITE State=UP
+EOF
+
+# the controller, then the node; the node must come up idle
+slurmctld -i -f "$SLURM_CONF" || fail "slurmctld did not start"
+wait_for 30 "slurmctld to answer (scontrol ping)" bash -c 'scontrol ping | grep -q UP'
+slurmd -f "$SLURM_CONF" || fail "slurmd did not start"
+wait_for 30 "the node to be idle" bash -c 'sinfo -h -o %T | grep -qx idle'
+log "one-node cluster up: $(sinfo -h -o '%P %D %T %C') (ports $ctld_port, $slurmd_port)"
+
+# job environment: Open MPI as root, oversubscription allowed, the executable
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+export CAMBRIAN_EXE=$cambrian
+cd "$work"
+
+# experiment: synthetic task; write_config FILE GENERATIONS COST_US
+write_config() {
+  cat > "$1" <<EOF
+[task]
+name = synthetic
+synthetic_cost_us = $3
+synthetic_cost_per_gene_us = 20
+synthetic_noise = 0.2
+[evolution]
+population = 12
+generations = $2
+selection = tournament
+[run]
+seed = 11
+EOF
+}
+
+# job_field JOBID FIELD: one field of `scontrol show job`
+job_field() { scontrol -o show job "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+job_done() { case $(job_field "$1" JobState) in COMPLETED|FAILED|CANCELLED|TIMEOUT|NODE_FAIL|OUT_OF_MEMORY) return 0 ;; esac; return 1; }
+# expect_completed JOBID: the job ended COMPLETED with exit 0
+expect_completed() {
+  wait_for "${2:-90}" "job $1 to end" job_done "$1"
+  local st ec
+  st=$(job_field "$1" JobState) ec=$(job_field "$1" ExitCode)
+  [ "$st" = COMPLETED ] && [ "$ec" = 0:0 ] || fail "job $1 ended $st with exit code $ec"
+}
+# generations_in DIR: data lines of DIR/generations.tsv
+generations_in() { [ -f "$1/generations.tsv" ] && echo $(($(wc -l < "$1/generations.tsv") - 1)) || echo 0; }
+
+# complete: one job, start to finish
+check_complete() {
+  write_config "$work/complete.ini" 6 1000
+  local id
+  id=$(sbatch --parsable -J complete --ntasks=2 --time=5 --signal=B:USR1@30 \
+         "$source/jobs/slurm/evolve.sbatch" --config complete.ini)
+  log "complete: submitted job $id"
+  expect_completed "$id"
+  local out=$work/complete-$id.out
+  [ -f "$out" ] || fail "no log complete-$id.out (logs are named <job name>-<job id>.out)"
+  grep -q 'evolve.sbatch: fresh start; time left [0-9]* s, --max-hours 0\.0' "$out" ||
+    fail "complete: the log does not show --max-hours from the time left"
+  grep -q '^gen 6/6 ' "$out" || fail "complete: the run did not reach generation 6"
+  [ -f "$work/runs/complete/history.h5" ] || fail "complete: no runs/complete/history.h5"
+  [ "$(generations_in "$work/runs/complete")" -eq 6 ] ||
+    fail "complete: runs/complete/generations.tsv has $(generations_in "$work/runs/complete") generations"
+  log "complete: job $id COMPLETED, 6 generations, $(grep -o -- '--max-hours [0-9.]*' "$out" | head -n1)"
+}
+
+case $what in
+  complete) check_complete ;;
+  all) check_complete ;;
+  *) fail "unknown check '$what' (complete, resume, all)" ;;
+esac
+log "OK"
