@@ -24,7 +24,9 @@ def run_history():
 
 @pytest.fixture(scope="session")
 def sweep_dir():
-    """Directory of the fixture sweep (runs at 1 and 2 workers; skips without it)."""
+    """Directory of the fixture sweep (runs at 1 and 2 workers; skips without it). Tests that
+    draw PNGs or start Python ask for it too, so that the store label's pytest over this folder
+    (on a one-rank run, no sweep) stays quick."""
     sweep = os.environ.get("CAMBRIAN_SWEEP_DIR")
     if not sweep:
         pytest.skip("CAMBRIAN_SWEEP_DIR not set (run through ctest -L analysis)")

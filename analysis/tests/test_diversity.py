@@ -63,12 +63,16 @@ def test_fixture_table_agrees_with_history(run_history):
     assert rows[0]["genotype_distance"] > 0.1
 
 
-def test_command_line(run_history, run_script, tmp_path):
-    result = run_script("diversity", run_history, "--output", tmp_path / "d.png", "--table", tmp_path / "d.tsv")
-    assert result.returncode == 0, result.stderr
+def test_command_line(sweep_dir, run_history, tmp_path):
+    assert diversity.main([run_history, "--output", str(tmp_path / "d.png"), "--table", str(tmp_path / "d.tsv")]) == 0
     assert (tmp_path / "d.png").read_bytes()[:8] == PNG
     lines = (tmp_path / "d.tsv").read_text().splitlines()
     assert lines[0].split("\t") == diversity.COLUMNS and len(lines) > 2
+
+
+def test_runs_as_a_script(sweep_dir, run_script):
+    result = run_script("diversity", "--help")
+    assert result.returncode == 0 and "--pairs" in result.stdout
 
 
 def test_errors(tmp_path, capsys):

@@ -75,16 +75,20 @@ def test_fixture_counts_agree_with_the_history(run_history):
 
 
 # the command line: a PNG, the tables, windows; errors give 4 and 2
-def test_command_line(run_history, run_script, tmp_path):
-    result = run_script("improvements", run_history, "--output", tmp_path / "i.png", "--window", 2,
-                        "--table", tmp_path / "ops.tsv", "--windows-table", tmp_path / "win.tsv")
-    assert result.returncode == 0, result.stderr
+def test_command_line(sweep_dir, run_history, tmp_path, capsys):
+    assert improvements.main([run_history, "--output", str(tmp_path / "i.png"), "--window", "2",
+                              "--table", str(tmp_path / "ops.tsv"), "--windows-table", str(tmp_path / "win.tsv")]) == 0
     assert (tmp_path / "i.png").read_bytes()[:8] == PNG
-    assert "points of improvement" in result.stdout
+    assert "points of improvement" in capsys.readouterr().out
     header = (tmp_path / "ops.tsv").read_text().splitlines()[0]
     assert header.startswith("operator\toffspring\timproved")
     firsts = {line.split("\t")[0] for line in (tmp_path / "win.tsv").read_text().splitlines()[1:]}
     assert firsts <= {"0", "2", "4", "6", "8"} and "0" in firsts
+
+
+def test_runs_as_a_script(sweep_dir, run_script):
+    result = run_script("improvements", "--help")
+    assert result.returncode == 0 and "--window" in result.stdout
 
 
 def test_errors(tmp_path, capsys):

@@ -60,14 +60,19 @@ def test_missing_parent_is_an_error():
 
 
 # the command line writes the PNG and a TSV whose last row is the best creature
-def test_command_line_writes_png_and_table(run_history, run_script, tmp_path, loaded):
+def test_command_line_writes_png_and_table(sweep_dir, run_history, tmp_path, loaded, capsys):
     t, _ = loaded
-    result = run_script("lineage", run_history, "--output", tmp_path / "l.png", "--table", tmp_path / "l.tsv")
-    assert result.returncode == 0, result.stderr
+    assert lineage.main([run_history, "--output", str(tmp_path / "l.png"), "--table", str(tmp_path / "l.tsv")]) == 0
     assert (tmp_path / "l.png").read_bytes()[:8] == PNG
     rows = list(csv.DictReader(open(tmp_path / "l.tsv"), delimiter="\t"))
     assert rows[0]["generation"] == "0" and int(rows[-1]["id"]) == lineage.best_id(t)
-    assert "ancestors in all" in result.stdout
+    assert "ancestors in all" in capsys.readouterr().out
+
+
+# as a script, headless (only with the sweep fixture: starting Python is slow on a busy machine)
+def test_runs_as_a_script(sweep_dir, run_script):
+    result = run_script("lineage", "--help")
+    assert result.returncode == 0 and "--output" in result.stdout
 
 
 # --id follows another creature; an unknown id, a missing file and bad options fail cleanly

@@ -53,12 +53,16 @@ def test_imbalance_of_a_lopsided_generation():
     assert load_balance.per_worker(t) == {1: (2, 3.0, 1.5, 2.0)}
 
 
-def test_command_line(run_history, run_script, tmp_path):
-    result = run_script("load_balance", run_history, "--output", tmp_path / "lb.png", "--table", tmp_path / "lb.tsv")
-    assert result.returncode == 0, result.stderr
+def test_command_line(sweep_dir, run_history, tmp_path, capsys):
+    assert load_balance.main([run_history, "--output", str(tmp_path / "lb.png"), "--table", str(tmp_path / "lb.tsv")]) == 0
     assert (tmp_path / "lb.png").read_bytes()[:8] == PNG
-    assert "worker_rank\tevaluations\tbusy_seconds" in result.stdout
+    assert "worker_rank\tevaluations\tbusy_seconds" in capsys.readouterr().out
     assert (tmp_path / "lb.tsv").read_text().startswith("generation\tworkers")
+
+
+def test_runs_as_a_script(sweep_dir, run_script):
+    result = run_script("load_balance", "--help")
+    assert result.returncode == 0 and "--bins" in result.stdout
 
 
 def test_errors(tmp_path, capsys):

@@ -75,7 +75,7 @@ def test_command_line_with_sweep(sweep_dir, run_script, tmp_path):
     assert len((tmp_path / "m.tsv").read_text().splitlines()) == 1 + 2 * 7
 
 
-def test_parameters_and_errors(tmp_path, capsys):
+def test_parameters_and_errors(sweep_dir, tmp_path, capsys):
     assert sm.main(["--cost-mean", "0.01", "--max-workers", "4", "--output", str(tmp_path / "p.png")]) == 0
     assert "efficiency below 50 %" in capsys.readouterr().out
     with pytest.raises(SystemExit) as exit_:
