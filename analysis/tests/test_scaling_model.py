@@ -41,6 +41,7 @@ def test_barrier_and_serial_bounds():
     assert sm.generation_time(costs, 8, 0.0, 2.5) == 7.5
     assert sm.limit_of(costs, 8, 0.0, 10.0) == "serial"
     assert sm.limit_of(np.ones(100), 2, 0.0, 0.0) == "work"
+    assert sm.limit_of(np.ones(80), 64, 0.0, 0.0) == "barrier"  # 2 evaluations on some workers, 1 on others
 
 
 # with overhead, efficiency falls with W and speedup never exceeds W
