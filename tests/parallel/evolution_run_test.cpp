@@ -1,5 +1,7 @@
 #include "parallel/evolution_run.hpp"
 
+#include "cambrian/error.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,22 +10,49 @@
 namespace cambrian {
 namespace {
 
-RunResult runOnce(const std::string& dir, std::ostream& out) {
+// a small synthetic run; `fresh` ignores a checkpoint left in `dir` by an earlier run
+RunResult runOnce(const std::string& dir, std::ostream& out, bool fresh = true, int generations = 3,
+                  RunSettings run = {}) {
   EvolutionSettings settings;
   settings.population = 10;
-  settings.generations = 3;
+  settings.generations = generations;
   settings.seed = 4;
   WorkerSettings worker;
   worker.task.kind = TaskKind::synthetic;
   worker.task.synthetic_cost_us = 20;
   InProcessEvaluator evaluator(worker);
-  RunSettings run;
   run.out_dir = dir;
+  run.fresh = fresh;
+  if (run.config_text.empty())
+    run.config_text = "[evolution]\ngenerations = " + std::to_string(generations) +
+                      "\npopulation = 10\n\n[run]\nout = " + dir + "\nseed = 4\n";
   return runEvolution(settings, worker.limits, {}, evaluator, run, out);
+}
+
+// a stop request that turns true on its second poll (after one generation)
+int stop_polls = 0;
+bool stopOnSecondPoll() {
+  return ++stop_polls >= 2;
+}
+const char* stopName() {
+  return "a test";
+}
+
+// the deterministic columns of the individual records
+std::vector<std::string> recordKeys(const RunResult& result) {
+  std::vector<std::string> keys;
+  for (const IndividualRecord& r : result.individuals) {
+    IndividualRecord copy = r;
+    copy.eval_seconds = 0;
+    copy.worker_rank = 0;
+    keys.push_back(individualsTsvRow(copy));
+  }
+  return keys;
 }
 
 TEST(EvolutionRun, RecordsEveryIndividualAndGenerationAndWritesTables) {
   std::string dir = testing::TempDir() + "/cambrian_evolution_run_test";
+  std::filesystem::remove_all(dir);
   std::ostringstream out;
   RunResult result = runOnce(dir, out);
   EXPECT_EQ(result.individuals.size(), 30u);
@@ -41,6 +70,67 @@ TEST(EvolutionRun, SameSettingsSameDigest) {
   std::ostringstream out;
   std::string dir = testing::TempDir() + "/cambrian_evolution_run_test2";
   EXPECT_EQ(runOnce(dir, out).digest, runOnce(dir, out).digest);
+}
+
+TEST(EvolutionRun, StoppedAndResumedRunEqualsTheStraightRun) {
+  std::ostringstream out;
+  std::string base = testing::TempDir() + "/cambrian_evolution_run_test_";
+  RunResult straight = runOnce(base + "straight", out);
+  EXPECT_TRUE(std::filesystem::exists(base + "straight/checkpoint.h5"));
+
+  // stopped after one generation: checkpointed, not finished
+  std::string dir = base + "stopped";
+  RunSettings stopping;
+  stop_polls = 0;
+  stopping.stop_requested = stopOnSecondPoll;
+  stopping.stop_reason = stopName;
+  std::ostringstream first;
+  RunResult stopped = runOnce(dir, first, true, 3, stopping);
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_EQ(stopped.next_generation, 1u);
+  EXPECT_EQ(stopped.generations.size(), 1u);
+  EXPECT_NE(first.str().find("stopped by a test after 1 generation(s)"), std::string::npos)
+      << first.str();
+
+  // the same run again continues and ends as the straight run
+  std::ostringstream second;
+  RunResult resumed = runOnce(dir, second, false);
+  EXPECT_TRUE(resumed.resumed);
+  EXPECT_FALSE(resumed.stopped);
+  EXPECT_NE(second.str().find("resuming from " + dir + "/checkpoint.h5 at generation 1"),
+            std::string::npos)
+      << second.str();
+  EXPECT_EQ(resumed.digest, straight.digest);
+  EXPECT_EQ(recordKeys(resumed), recordKeys(straight));
+  ASSERT_EQ(resumed.generations.size(), 3u);
+  EXPECT_EQ(resumed.generations[2].stats.best, straight.generations[2].stats.best);
+}
+
+TEST(EvolutionRun, MoreGenerationsExtendAFinishedRun) {
+  std::ostringstream out;
+  std::string base = testing::TempDir() + "/cambrian_evolution_run_test_";
+  RunResult straight = runOnce(base + "long", out, true, 4);
+  runOnce(base + "extended", out, true, 2);
+  RunResult extended = runOnce(base + "extended", out, false, 4);
+  EXPECT_TRUE(extended.resumed);
+  EXPECT_EQ(extended.digest, straight.digest);
+  EXPECT_EQ(recordKeys(extended), recordKeys(straight));
+}
+
+TEST(EvolutionRun, AChangedResultSettingIsRefused) {
+  std::ostringstream out;
+  std::string dir = testing::TempDir() + "/cambrian_evolution_run_test_changed";
+  runOnce(dir, out, true, 2);
+  RunSettings changed;
+  changed.config_text =
+      "[evolution]\ngenerations = 2\npopulation = 10\n\n[run]\nout = " + dir + "\nseed = 5\n";
+  try {
+    runOnce(dir, out, false, 2, changed);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::checkpoint);
+    EXPECT_NE(std::string(e.what()).find("run.seed was '4'"), std::string::npos) << e.what();
+  }
 }
 
 TEST(EvolutionRun, ProgressLineNamesTheFigures) {
