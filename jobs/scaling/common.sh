@@ -40,7 +40,7 @@ USAGE
 workers="1 2" repeats=3 generations=5 population=300 per_worker=100 task=synthetic cost_us=10000
 config="" seed=1 name="" out_root=runs/scaling binary="" launcher=mpirun oversubscribe="" force=0 analysis=1
 die_usage() { echo "$MODE.sh: error: $*" >&2; echo "try: jobs/scaling/$MODE.sh --help" >&2; exit 2; }
-need() { [ $# -ge 2 ] && [ -n "$2" ] || die_usage "$1 needs a value"; }
+need() { if [ $# -lt 2 ] || [ -z "$2" ]; then die_usage "$1 needs a value"; fi; }
 
 # options
 while [ $# -gt 0 ]; do
