@@ -87,9 +87,54 @@ check_complete() {
   log "complete: PBS Pro-style job took the walltime from qstat -f"
 }
 
+# resume: SIGTERM to the job script (PBS at the walltime) stops the run cleanly; run again, it
+# continues to the end and equals a straight run
+check_resume() {
+  write_config "$work/resume.ini" 40 15000
+  "$cambrian" evolve --config "$work/resume.ini" --out "$work/straight" --quiet \
+    > "$work/straight.txt" 2>&1 || { cat "$work/straight.txt"; fail "the straight run failed"; }
+
+  # the first job, stopped by SIGTERM once a few generations are done
+  export CAMBRIAN_CONFIG=resume.ini PBS_WALLTIME=3600
+  (cd / && exec env PBS_JOBID=1.fake-server PBS_JOBNAME=resume bash "$script" \
+     > "$work/resume.o1" 2>&1) &
+  local pid=$! start=$SECONDS
+  until grep -q '^gen 3/40 ' "$work/resume.o1"; do
+    [ $((SECONDS - start)) -lt 60 ] || { kill "$pid"; fail "job 1 did not reach generation 3 in 60 s"; }
+    kill -0 "$pid" 2> /dev/null || { cat "$work/resume.o1"; fail "job 1 ended early"; }
+    sleep 0.2
+  done
+  kill -TERM "$pid"
+  wait "$pid" || { cat "$work/resume.o1"; fail "job 1 did not exit 0 after SIGTERM"; }
+  grep -q 'evolve.pbs: got SIGTERM' "$work/resume.o1" || fail "job 1: SIGTERM not trapped"
+  grep -q 'stopped by SIGUSR1 after' "$work/resume.o1" || fail "job 1: rank 0 did not stop on the forwarded SIGUSR1"
+  local done1
+  done1=$(generations_in "$work/runs/resume")
+  [ "$done1" -ge 3 ] && [ "$done1" -lt 40 ] || fail "job 1 left $done1 generations (expected 3..39)"
+  log "resume: job 1 stopped by SIGTERM after $done1 generations, exit 0"
+
+  # the second job: the same script again continues and completes the run
+  (cd / && exec env PBS_JOBID=2.fake-server PBS_JOBNAME=resume bash "$script" \
+     > "$work/resume.o2" 2>&1) || { cat "$work/resume.o2"; fail "job 2 failed"; }
+  grep -q "continuing from runs/resume/checkpoint.h5" "$work/resume.o2" || fail "job 2 did not see the checkpoint"
+  grep -q "resuming from runs/resume/checkpoint.h5 at generation $done1 " "$work/resume.o2" ||
+    fail "job 2 did not resume at generation $done1"
+  grep -q 'the run is complete' "$work/resume.o2" || fail "job 2 did not complete the run"
+  "$source/analysis/compare_histories.py" "$work/straight/history.h5" "$work/runs/resume/history.h5" ||
+    fail "the resumed history differs from the straight run's"
+
+  # a third job finds the finished run and exits 0 without a generation
+  (cd / && exec env PBS_JOBID=3.fake-server PBS_JOBNAME=resume bash "$script" \
+     > "$work/resume.o3" 2>&1) || { cat "$work/resume.o3"; fail "job 3 failed"; }
+  grep -q '^gen ' "$work/resume.o3" && fail "job 3 ran a generation of a finished run"
+  grep -q 'the run is complete' "$work/resume.o3" || fail "job 3 did not report the run complete"
+  log "resume: job 2 continued at generation $done1, history identical to the straight run's; job 3 found it complete"
+}
+
 case $what in
   complete) check_complete ;;
-  all) check_complete ;;
+  resume) check_resume ;;
+  all) check_complete; check_resume ;;
   *) fail "unknown check '$what' (complete, resume, all)" ;;
 esac
 log "OK"

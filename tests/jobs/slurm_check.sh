@@ -4,9 +4,10 @@
 # jobs/slurm/evolve.sbatch and jobs/slurm/chain.sh on tiny synthetic experiments:
 #   complete:  one job runs an evolution to the end (COMPLETED, exit 0, --max-hours passed,
 #              every generation in the history)
-#   resume:    a chain of three jobs (afterany); the first is stopped by
-#              `scancel --signal=USR1 --batch`, checkpoints and exits 0, the second continues
-#              from the checkpoint, the third finds a finished run; the history is identical
+#   resume:    a chain of five jobs (afterany) with a 1 minute limit; the first is stopped
+#              by `scancel --signal=USR1 --batch`, checkpoints and exits 0, the next ones
+#              continue from the checkpoint and stop before their --max-hours, until one
+#              completes the run and cancels the rest; the history is identical
 #              (analysis/compare_histories.py) to a straight run of the same experiment
 # The daemons are stopped on exit, whatever happens; on failure their logs are printed.
 # Run by CTest (label slurm); fails (never skips) when Slurm cannot be started.
@@ -195,9 +196,81 @@ check_complete() {
   log "complete: job $id COMPLETED, 6 generations, $(grep -o -- '--max-hours [0-9.]*' "$out" | head -n1)"
 }
 
+# resume: a chain of five jobs (afterany) with a short time limit: the first is stopped by its
+# signal, the next ones by --max-hours (60 s limit less a 50 s margin: about 10 s of a run
+# that needs at least 14 s of evaluations), one completes the run and cancels the rest; the
+# history equals a straight run's
+check_resume() {
+  local total=80
+  write_config "$work/resume.ini" $total 15000
+  # the straight run, in process, beside the chain (results do not depend on rank count)
+  "$cambrian" evolve --config "$work/resume.ini" --out "$work/straight" --quiet \
+    > "$work/straight.txt" 2>&1 &
+  local straight_pid=$! ids
+  ids=$(CAMBRIAN_MARGIN_S=50 bash "$source/jobs/slurm/chain.sh" 5 -J resume --ntasks=2 \
+          --time=1 --signal=B:USR1@10 -- --config resume.ini) || fail "chain.sh failed: $ids"
+  local -a jobs
+  read -r -a jobs <<< "$(echo $ids)"
+  [ ${#jobs[@]} -eq 5 ] || fail "chain.sh printed '$ids', not five job ids"
+  log "resume: chain ${jobs[*]} (afterany)"
+  [ "$(job_field "${jobs[1]}" Dependency)" = "afterany:${jobs[0]}(unfulfilled)" ] ||
+    fail "job ${jobs[1]} has dependency '$(job_field "${jobs[1]}" Dependency)', not afterany:${jobs[0]}"
+
+  # the first job: stopped by its signal once it is a few generations in
+  local j1=${jobs[0]}
+  wait_for 60 "job $j1 to reach generation 3" grep -q "^gen 3/$total " "$work/resume-$j1.out"
+  scancel --signal=USR1 --batch "$j1" || fail "scancel --signal=USR1 --batch $j1"
+  expect_completed "$j1"
+  local done=$(generations_in "$work/runs/resume")
+  grep -q 'evolve.sbatch: got SIGUSR1' "$work/resume-$j1.out" || fail "job $j1: the batch shell did not trap SIGUSR1"
+  grep -q 'stopped by SIGUSR1 after' "$work/resume-$j1.out" || fail "job $j1: rank 0 did not stop on SIGUSR1"
+  grep -q 'stopped cleanly; the next job' "$work/resume-$j1.out" || fail "job $j1: not reported as stopped cleanly"
+  [ "$done" -ge 3 ] && [ "$done" -lt $total ] || fail "job $j1 left $done generations (expected 3..$((total - 1)))"
+  [ -f "$work/runs/resume/checkpoint.h5" ] || fail "job $j1 left no checkpoint"
+  log "resume: job $j1 stopped by SIGUSR1 after $done generations, exit 0, checkpoint written"
+
+  # the next jobs: each continues where the last stopped, until one completes the run
+  local k j complete="" by_time=0
+  for ((k = 1; k < 5; k++)); do
+    j=${jobs[k]}
+    if [ -n "$complete" ]; then
+      wait_for 30 "job $j to be cancelled" job_done "$j"
+      [ "$(job_field "$j" JobState)" = CANCELLED ] ||
+        fail "job $j ended $(job_field "$j" JobState), expected CANCELLED by job $complete, which completed the run"
+      log "resume: job $j cancelled by job $complete (nothing left to do)"
+      continue
+    fi
+    expect_completed "$j" 120
+    grep -q "resuming from runs/resume/checkpoint.h5 at generation $done " "$work/resume-$j.out" ||
+      fail "job $j did not resume at generation $done"
+    done=$(generations_in "$work/runs/resume")
+    if grep -q 'the run is complete' "$work/resume-$j.out"; then
+      [ "$done" -eq $total ] || fail "job $j reported a complete run with $done generations"
+      complete=$j
+      log "resume: job $j continued and completed the run"
+    else
+      grep -q 'stopped before the --max-hours' "$work/resume-$j.out" ||
+        fail "job $j neither completed the run nor stopped before --max-hours"
+      by_time=$((by_time + 1))
+      log "resume: job $j continued and stopped before its --max-hours after generation $done, exit 0"
+    fi
+  done
+  [ -n "$complete" ] || fail "five jobs did not complete the run ($done of $total generations)"
+  [ "$by_time" -ge 1 ] || fail "no job stopped by --max-hours"
+
+  # the chained history is the straight run's
+  wait "$straight_pid" || { cat "$work/straight.txt"; fail "the straight run failed"; }
+  "$source/analysis/compare_histories.py" "$work/straight/history.h5" \
+    "$work/runs/resume/history.h5" || fail "the chained history differs from the straight run's"
+  [ "$(grep '^digest ' "$work/straight.txt")" = "$(grep '^digest ' "$work/resume-$complete.out")" ] ||
+    fail "digests differ: $(grep '^digest ' "$work/straight.txt") vs $(grep '^digest ' "$work/resume-$complete.out")"
+  log "resume: history identical to the straight run's (compare_histories.py), $(grep '^digest ' "$work/straight.txt")"
+}
+
 case $what in
   complete) check_complete ;;
-  all) check_complete ;;
+  resume) check_resume ;;
+  all) check_complete; check_resume ;;
   *) fail "unknown check '$what' (complete, resume, all)" ;;
 esac
 log "OK"
