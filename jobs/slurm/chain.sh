@@ -7,11 +7,12 @@
 #   jobs/slurm/chain.sh 4 -J walk1 --time=12:00:00 -- --config jobs/experiments/walk.ini
 #
 # All jobs get the same job name (-J/--job-name, default: the config file's base name), which
-# is what ties them to one output directory. Prints one job id per line. Once the evolution is
-# complete, a later job of the chain starts, finds the finished run, runs no generation and
-# exits 0 within seconds, so leftover jobs cost little; `scancel --name NAME` drops them.
+# is what ties them to one output directory. Prints one job id per line. The job that completes
+# the evolution cancels the chain's pending jobs (evolve.sbatch; CAMBRIAN_KEEP_CHAIN=1 keeps
+# them: each then starts, finds the finished run, runs no generation and exits 0 in seconds).
 # Options of this script: --dry-run prints the sbatch commands instead; --after JOBID makes
-# the first job wait for an existing job too; -h/--help. N is at most 50.
+# the first job wait for an existing job too; -h/--help. N is at most 50. A --fresh among
+# the batch script's arguments goes to the first job only.
 # Environment: SBATCH (the sbatch command, default sbatch), EVOLVE_SCRIPT (default:
 # evolve.sbatch beside this script), and CAMBRIAN_* (passed on to the jobs, see evolve.sbatch).
 set -euo pipefail
@@ -58,13 +59,19 @@ sbatch_cmd=${SBATCH:-sbatch}
 script=${EVOLVE_SCRIPT:-$(cd "$(dirname "$0")" && pwd)/evolve.sbatch}
 [ -f "$script" ] || { echo "chain.sh: batch script '$script' not found" >&2; exit 2; }
 
+# --fresh belongs to the first job only: the later ones continue what it started
+later_args=()
+for a in "${script_args[@]}"; do [ "$a" = --fresh ] || later_args+=("$a"); done
+
 # submit the jobs, each depending on the one before
 previous=$after
 for ((k = 1; k <= count; k++)); do
   dep=()
   [ -n "$previous" ] && dep=(--dependency="afterany:$previous")
+  args=("${script_args[@]}")
+  [ "$k" -eq 1 ] || args=("${later_args[@]}")
   cmd=("$sbatch_cmd" --parsable --job-name="$name" "${dep[@]}" "${sbatch_args[@]}" "$script"
-       "${script_args[@]}")
+       "${args[@]}")
   if [ -n "$dry_run" ]; then
     echo "${cmd[*]}"
     previous="JOB$k"

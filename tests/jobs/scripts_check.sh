@@ -96,6 +96,9 @@ echo "$out" | sed -n 2p | grep -q -- '--dependency=afterany:JOB1 --time=1:00:00 
 echo "$out" | sed -n 3p | grep -q -- '--dependency=afterany:JOB2 ' || fail "chain: job 3 not after job 2"
 out=$(bash "$source/jobs/slurm/chain.sh" 2 --dry-run -J mine --after 77)
 echo "$out" | sed -n 1p | grep -q -- '--job-name=mine --dependency=afterany:77 ' || fail "chain: --after: $out"
+out=$(bash "$source/jobs/slurm/chain.sh" 3 --dry-run -J f -- x.ini --fresh --seed 2)
+[ "$(echo "$out" | grep -c -- ' x.ini --fresh --seed 2$')" -eq 1 ] &&
+  [ "$(echo "$out" | grep -c -- ' x.ini --seed 2$')" -eq 2 ] || fail "chain: --fresh not on the first job only: $out"
 for bad in 0 51 x; do
   bash "$source/jobs/slurm/chain.sh" "$bad" --dry-run > /dev/null 2>&1 && fail "chain accepted N=$bad"
 done

@@ -4,6 +4,7 @@
 # jobs/slurm/evolve.sbatch and jobs/slurm/chain.sh on tiny synthetic experiments:
 #   complete:  one job runs an evolution to the end (COMPLETED, exit 0, --max-hours passed,
 #              every generation in the history)
+#   srun:      the same script with CAMBRIAN_LAUNCHER=srun (srun --mpi=pmix), stopped by SIGUSR1
 #   resume:    a chain of five jobs (afterany) with a 1 minute limit; the first is stopped
 #              by `scancel --signal=USR1 --batch`, checkpoints and exits 0, the next ones
 #              continue from the checkpoint and stop before their --max-hours, until one
@@ -11,11 +12,11 @@
 #              (analysis/compare_histories.py) to a straight run of the same experiment
 # The daemons are stopped on exit, whatever happens; on failure their logs are printed.
 # Run by CTest (label slurm); fails (never skips) when Slurm cannot be started.
-# usage: slurm_check.sh CAMBRIAN SOURCE_DIR WORK_DIR [complete|resume|all]
+# usage: slurm_check.sh CAMBRIAN SOURCE_DIR WORK_DIR [complete|srun|resume|all]
 set -euo pipefail
 
 if [ "${1:-}" = --help ] || [ $# -lt 3 ]; then
-  sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
   [ "${1:-}" = --help ] && exit 0 || exit 2
 fi
 cambrian=$(realpath "$1") source=$(realpath "$2") work=$3 what=${4:-all}
@@ -267,10 +268,26 @@ check_resume() {
   log "resume: history identical to the straight run's (compare_histories.py), $(grep '^digest ' "$work/straight.txt")"
 }
 
+# srun: the same job launched with `srun --mpi=pmix` instead of mpirun; stopped by SIGUSR1
+check_srun() {
+  write_config "$work/srun.ini" 200 15000
+  local id
+  id=$(CAMBRIAN_LAUNCHER=srun sbatch --parsable -J srun --ntasks=2 --time=5 \
+         --signal=B:USR1@30 "$source/jobs/slurm/evolve.sbatch" --config srun.ini)
+  wait_for 60 "job $id to reach generation 3" grep -q '^gen 3/200 ' "$work/srun-$id.out"
+  scancel --signal=USR1 --batch "$id" || fail "scancel --signal=USR1 --batch $id"
+  expect_completed "$id"
+  grep -q 'evolve.sbatch: srun --mpi=pmix' "$work/srun-$id.out" || fail "srun: not launched by srun"
+  grep -q 'cambrian evolve: 2 rank(s)' "$work/srun-$id.out" || fail "srun: not 2 ranks"
+  grep -q 'stopped by SIGUSR1 after' "$work/srun-$id.out" || fail "srun: rank 0 did not stop on SIGUSR1"
+  log "srun: job $id ran 2 ranks under srun --mpi=pmix, stopped by SIGUSR1 after $(generations_in "$work/runs/srun") generations"
+}
+
 case $what in
   complete) check_complete ;;
+  srun) check_srun ;;
   resume) check_resume ;;
-  all) check_complete; check_resume ;;
-  *) fail "unknown check '$what' (complete, resume, all)" ;;
+  all) check_complete; check_srun; check_resume ;;
+  *) fail "unknown check '$what' (complete, srun, resume, all)" ;;
 esac
 log "OK"
