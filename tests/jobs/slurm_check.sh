@@ -5,7 +5,7 @@
 #   complete:  one job runs an evolution to the end (COMPLETED, exit 0, --max-hours passed,
 #              every generation in the history)
 #   srun:      the same script with CAMBRIAN_LAUNCHER=srun (srun --mpi=pmix), stopped by SIGUSR1
-#   resume:    a chain of five jobs (afterany) with a 1 minute limit; the first is stopped
+#   resume:    a chain of six jobs (afterany) with a 1 minute limit; the first is stopped
 #              by `scancel --signal=USR1 --batch`, checkpoints and exits 0, the next ones
 #              continue from the checkpoint and stop before their --max-hours, until one
 #              completes the run and cancels the rest; the history is identical
@@ -46,6 +46,10 @@ cleanup() {
   local rc=$?
   set +e
   trap - EXIT INT TERM
+  # background runs of this script (the straight run)
+  local children
+  children=$(jobs -p)
+  [ -z "$children" ] || kill $children 2> /dev/null
   if [ -f "$state/slurmctld.pid" ]; then
     scancel --full --quiet --user root > /dev/null 2>&1
     for _ in $(seq 1 20); do [ -z "$(squeue -h 2> /dev/null)" ] && break; sleep 0.5; done
@@ -197,22 +201,22 @@ check_complete() {
   log "complete: job $id COMPLETED, 6 generations, $(grep -o -- '--max-hours [0-9.]*' "$out" | head -n1)"
 }
 
-# resume: a chain of five jobs (afterany) with a short time limit: the first is stopped by its
+# resume: a chain of six jobs (afterany) with a short time limit: the first is stopped by its
 # signal, the next ones by --max-hours (60 s limit less a 50 s margin: about 10 s of a run
-# that needs at least 14 s of evaluations), one completes the run and cancels the rest; the
+# that needs at least 18 s of evaluations), one completes the run and cancels the rest; the
 # history equals a straight run's
 check_resume() {
-  local total=80
+  local total=100
   write_config "$work/resume.ini" $total 15000
   # the straight run, in process, beside the chain (results do not depend on rank count)
   "$cambrian" evolve --config "$work/resume.ini" --out "$work/straight" --quiet \
     > "$work/straight.txt" 2>&1 &
   local straight_pid=$! ids
-  ids=$(CAMBRIAN_MARGIN_S=50 bash "$source/jobs/slurm/chain.sh" 5 -J resume --ntasks=2 \
+  ids=$(CAMBRIAN_MARGIN_S=50 bash "$source/jobs/slurm/chain.sh" 6 -J resume --ntasks=2 \
           --time=1 --signal=B:USR1@10 -- --config resume.ini) || fail "chain.sh failed: $ids"
   local -a jobs
   read -r -a jobs <<< "$(echo $ids)"
-  [ ${#jobs[@]} -eq 5 ] || fail "chain.sh printed '$ids', not five job ids"
+  [ ${#jobs[@]} -eq 6 ] || fail "chain.sh printed '$ids', not six job ids"
   log "resume: chain ${jobs[*]} (afterany)"
   [ "$(job_field "${jobs[1]}" Dependency)" = "afterany:${jobs[0]}(unfulfilled)" ] ||
     fail "job ${jobs[1]} has dependency '$(job_field "${jobs[1]}" Dependency)', not afterany:${jobs[0]}"
@@ -232,7 +236,7 @@ check_resume() {
 
   # the next jobs: each continues where the last stopped, until one completes the run
   local k j complete="" by_time=0
-  for ((k = 1; k < 5; k++)); do
+  for ((k = 1; k < 6; k++)); do
     j=${jobs[k]}
     if [ -n "$complete" ]; then
       wait_for 30 "job $j to be cancelled" job_done "$j"
@@ -256,7 +260,7 @@ check_resume() {
       log "resume: job $j continued and stopped before its --max-hours after generation $done, exit 0"
     fi
   done
-  [ -n "$complete" ] || fail "five jobs did not complete the run ($done of $total generations)"
+  [ -n "$complete" ] || fail "six jobs did not complete the run ($done of $total generations)"
   [ "$by_time" -ge 1 ] || fail "no job stopped by --max-hours"
 
   # the chained history is the straight run's
