@@ -72,17 +72,17 @@ check_complete() {
   # Torque: PBS_WALLTIME in seconds
   run_job torque "$work/torque.o1" PBS_WALLTIME=600 CAMBRIAN_CONFIG=tiny.ini
   wait "$job_pid" || { cat "$work/torque.o1"; fail "torque job failed"; }
-  grep -q 'time left 600 s, --max-hours 0.133333 (margin 120 s)' "$work/torque.o1" ||
-    { cat "$work/torque.o1"; fail "torque: --max-hours not 480 s from PBS_WALLTIME=600"; }
+  grep -q 'time left 600 s, --max-hours 0.083333 (margin 300 s)' "$work/torque.o1" ||
+    { cat "$work/torque.o1"; fail "torque: --max-hours not 300 s from PBS_WALLTIME=600"; }
   grep -q -- '-np 2 --hostfile' "$work/torque.o1" || fail "torque: ranks not taken from PBS_NODEFILE"
   [ "$(generations_in "$work/runs/torque")" -eq 5 ] || fail "torque: not 5 generations in runs/torque"
-  log "complete: Torque-style job ran 5 generations in runs/torque with --max-hours 0.133333"
+  log "complete: Torque-style job ran 5 generations in runs/torque with --max-hours 0.083333"
 
   # PBS Pro: the walltime from qstat -f, the config as an argument
   run_job pbspro "$work/pbspro.o2" PATH="$work/bin:$PATH" CAMBRIAN_ARGS="--config tiny.ini"
   wait "$job_pid" || { cat "$work/pbspro.o2"; fail "pbspro job failed"; }
-  grep -q 'time left 900 s, --max-hours 0.216667 (margin 120 s)' "$work/pbspro.o2" ||
-    { cat "$work/pbspro.o2"; fail "pbspro: --max-hours not 780 s from qstat's walltime 00:15:00"; }
+  grep -q 'time left 900 s, --max-hours 0.166667 (margin 300 s)' "$work/pbspro.o2" ||
+    { cat "$work/pbspro.o2"; fail "pbspro: --max-hours not 600 s from qstat's walltime 00:15:00"; }
   [ "$(generations_in "$work/runs/pbspro")" -eq 5 ] || fail "pbspro: not 5 generations"
   log "complete: PBS Pro-style job took the walltime from qstat -f"
 }

@@ -61,7 +61,8 @@ expect_hours() {
 }
 expect_hours 1-00:00:00 22.800000          # 86400 s less 5 % (4320 s)
 expect_hours 2:00:00 1.900000              # 7200 s less 5 % (360 s)
-expect_hours 10:00 0.133333                # 600 s less the 120 s minimum margin
+expect_hours 20:00 0.250000                # 1200 s less the 300 s minimum margin
+expect_hours 10:00 0.083333                # 600 s: the margin is at most half
 expect_hours 3:00 0.025000                 # 180 s: the margin is at most half
 expect_hours 45 0.006389                   # 45 s: seconds only, 23 s kept (margin 22 s)
 expect_hours 1-02:03:04 26.023333 100      # 93784 s less an explicit margin of 100 s
@@ -71,10 +72,10 @@ echo "time left UNLIMITED -> no --max-hours"
 
 # the launch line: output directory by job name, extra options passed on, srun when asked
 out=$(sbatch_with 10:00 --config x.ini --fresh --seed 5)
-echo "$out" | grep -q "fake-mpirun $work/bin/cambrian evolve --config x.ini --out runs/fake --max-hours 0.133333 --fresh --seed 5" ||
+echo "$out" | grep -q "fake-mpirun $work/bin/cambrian evolve --config x.ini --out runs/fake --max-hours 0.083333 --fresh --seed 5" ||
   fail "unexpected launch line: $out"
 out=$(CAMBRIAN_ARGS="--out elsewhere --seed 9" sbatch_with 10:00 x.ini)
-echo "$out" | grep -q -- "--config x.ini --out elsewhere --max-hours 0.133333 --seed 9" ||
+echo "$out" | grep -q -- "--config x.ini --out elsewhere --max-hours 0.083333 --seed 9" ||
   fail "CAMBRIAN_ARGS not applied: $out"
 printf '#!/usr/bin/env bash\necho "fake-srun $*"\n' > "$work/bin/srun" && chmod +x "$work/bin/srun"
 out=$(CAMBRIAN_LAUNCHER=srun sbatch_with 10:00 x.ini)
