@@ -55,7 +55,7 @@ sbatch_with() {
 expect_hours() {
   local out
   out=$(CAMBRIAN_MARGIN_S=${3:-} sbatch_with "$1" x.ini)
-  echo "$out" | grep -q -- "--max-hours $2\( \|$\)" ||
+  grep -q -- "--max-hours $2\( \|$\)" <<< "$out" ||
     fail "time left '$1' (margin '${3:-default}'): expected --max-hours $2, got: $out"
   echo "time left $1 -> --max-hours $2"
 }
@@ -67,19 +67,22 @@ expect_hours 3:00 0.025000                 # 180 s: the margin is at most half
 expect_hours 45 0.006389                   # 45 s: seconds only, 23 s kept (margin 22 s)
 expect_hours 1-02:03:04 26.023333 100      # 93784 s less an explicit margin of 100 s
 out=$(sbatch_with UNLIMITED x.ini)
-echo "$out" | grep -q -- '--max-hours' && fail "UNLIMITED should give no --max-hours: $out"
+grep -q -- '--max-hours' <<< "$out" && fail "UNLIMITED should give no --max-hours: $out"
 echo "time left UNLIMITED -> no --max-hours"
 
 # the launch line: output directory by job name, extra options passed on, srun when asked
 out=$(sbatch_with 10:00 --config x.ini --fresh --seed 5)
-echo "$out" | grep -q "fake-mpirun $work/bin/cambrian evolve --config x.ini --out runs/fake --max-hours 0.083333 --fresh --seed 5" ||
+grep -q "fake-mpirun $work/bin/cambrian evolve --config x.ini --out runs/fake --max-hours 0.083333 --fresh --seed 5" <<< "$out" ||
   fail "unexpected launch line: $out"
 out=$(CAMBRIAN_ARGS="--out elsewhere --seed 9" sbatch_with 10:00 x.ini)
-echo "$out" | grep -q -- "--config x.ini --out elsewhere --max-hours 0.083333 --seed 9" ||
+grep -q -- "--config x.ini --out elsewhere --max-hours 0.083333 --seed 9" <<< "$out" ||
   fail "CAMBRIAN_ARGS not applied: $out"
+out=$(sbatch_with 10:00 x.ini --max-hours 2)
+[ "$(echo "$out" | grep -c -- '--max-hours')" -eq 2 ] && grep -q -- 'runs/fake --max-hours 2$' <<< "$out" ||
+  fail "an explicit --max-hours should replace the script's: $out"
 printf '#!/usr/bin/env bash\necho "fake-srun $*"\n' > "$work/bin/srun" && chmod +x "$work/bin/srun"
 out=$(CAMBRIAN_LAUNCHER=srun sbatch_with 10:00 x.ini)
-echo "$out" | grep -q "fake-srun --mpi=pmix --kill-on-bad-exit=1 $work/bin/cambrian evolve" ||
+grep -q "fake-srun --mpi=pmix --kill-on-bad-exit=1 $work/bin/cambrian evolve" <<< "$out" ||
   fail "srun launch line: $out"
 set +e
 (cd "$work" && CAMBRIAN_EXE="$work/bin/cambrian" bash "$source/jobs/slurm/evolve.sbatch" missing.ini) > /dev/null 2>&1
