@@ -24,8 +24,10 @@ if [ $# -lt 1 ] || [ "$1" = -h ] || [ "$1" = --help ]; then
   usage; [ $# -ge 1 ] && exit 0 || exit 2
 fi
 count=$1; shift
-[[ $count =~ ^[0-9]+$ ]] && [ "$count" -ge 1 ] && [ "$count" -le 50 ] ||
-  { echo "chain.sh: N must be a number from 1 to 50, not '$count'" >&2; exit 2; }
+if ! [[ $count =~ ^[0-9]+$ ]] || [ "$count" -lt 1 ] || [ "$count" -gt 50 ]; then
+  echo "chain.sh: N must be a number from 1 to 50, not '$count'" >&2
+  exit 2
+fi
 sbatch_args=() script_args=() dry_run="" after="" name=""
 while [ $# -gt 0 ]; do
   case $1 in

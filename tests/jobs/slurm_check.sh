@@ -49,6 +49,7 @@ cleanup() {
   # background runs of this script (the straight run)
   local children
   children=$(jobs -p)
+  # shellcheck disable=SC2086  # one pid per word
   [ -z "$children" ] || kill $children 2> /dev/null
   if [ -f "$state/slurmctld.pid" ]; then
     scancel --full --quiet --user root > /dev/null 2>&1
@@ -215,7 +216,7 @@ check_resume() {
   ids=$(CAMBRIAN_MARGIN_S=50 bash "$source/jobs/slurm/chain.sh" 6 -J resume --ntasks=2 \
           --time=1 --signal=B:USR1@10 -- --config resume.ini) || fail "chain.sh failed: $ids"
   local -a jobs
-  read -r -a jobs <<< "$(echo $ids)"
+  mapfile -t jobs <<< "$ids"
   [ ${#jobs[@]} -eq 6 ] || fail "chain.sh printed '$ids', not six job ids"
   log "resume: chain ${jobs[*]} (afterany)"
   [ "$(job_field "${jobs[1]}" Dependency)" = "afterany:${jobs[0]}(unfulfilled)" ] ||
@@ -226,13 +227,14 @@ check_resume() {
   wait_for 60 "job $j1 to reach generation 3" grep -q "^gen 3/$total " "$work/resume-$j1.out"
   scancel --signal=USR1 --batch "$j1" || fail "scancel --signal=USR1 --batch $j1"
   expect_completed "$j1"
-  local done=$(generations_in "$work/runs/resume")
+  local reached
+  reached=$(generations_in "$work/runs/resume")
   grep -q 'evolve.sbatch: got SIGUSR1' "$work/resume-$j1.out" || fail "job $j1: the batch shell did not trap SIGUSR1"
   grep -q 'stopped by SIGUSR1 after' "$work/resume-$j1.out" || fail "job $j1: rank 0 did not stop on SIGUSR1"
   grep -q 'stopped cleanly; the next job' "$work/resume-$j1.out" || fail "job $j1: not reported as stopped cleanly"
-  [ "$done" -ge 3 ] && [ "$done" -lt $total ] || fail "job $j1 left $done generations (expected 3..$((total - 1)))"
+  [ "$reached" -ge 3 ] && [ "$reached" -lt $total ] || fail "job $j1 left $reached generations (expected 3..$((total - 1)))"
   [ -f "$work/runs/resume/checkpoint.h5" ] || fail "job $j1 left no checkpoint"
-  log "resume: job $j1 stopped by SIGUSR1 after $done generations, exit 0, checkpoint written"
+  log "resume: job $j1 stopped by SIGUSR1 after $reached generations, exit 0, checkpoint written"
 
   # the next jobs: each continues where the last stopped, until one completes the run
   local k j complete="" by_time=0
@@ -246,21 +248,21 @@ check_resume() {
       continue
     fi
     expect_completed "$j" 120
-    grep -q "resuming from runs/resume/checkpoint.h5 at generation $done " "$work/resume-$j.out" ||
-      fail "job $j did not resume at generation $done"
-    done=$(generations_in "$work/runs/resume")
+    grep -q "resuming from runs/resume/checkpoint.h5 at generation $reached " "$work/resume-$j.out" ||
+      fail "job $j did not resume at generation $reached"
+    reached=$(generations_in "$work/runs/resume")
     if grep -q 'the run is complete' "$work/resume-$j.out"; then
-      [ "$done" -eq $total ] || fail "job $j reported a complete run with $done generations"
+      [ "$reached" -eq $total ] || fail "job $j reported a complete run with $reached generations"
       complete=$j
       log "resume: job $j continued and completed the run"
     else
       grep -q 'stopped before the --max-hours' "$work/resume-$j.out" ||
         fail "job $j neither completed the run nor stopped before --max-hours"
       by_time=$((by_time + 1))
-      log "resume: job $j continued and stopped before its --max-hours after generation $done, exit 0"
+      log "resume: job $j continued and stopped before its --max-hours after generation $reached, exit 0"
     fi
   done
-  [ -n "$complete" ] || fail "six jobs did not complete the run ($done of $total generations)"
+  [ -n "$complete" ] || fail "six jobs did not complete the run ($reached of $total generations)"
   [ "$by_time" -ge 1 ] || fail "no job stopped by --max-hours"
 
   # the chained history is the straight run's
