@@ -131,6 +131,7 @@ SelectTypeParameters=CR_Core
 AccountingStorageType=accounting_storage/none
 JobAcctGatherType=jobacct_gather/none
 JobCompType=jobcomp/none
+MailProg=/bin/true
 MpiDefault=none
 ReturnToService=2
 SchedulerType=sched/backfill
