@@ -225,12 +225,14 @@ Setup parse(int argc, char** argv, bool read_seeds) {
   std::string config_path;
   std::uint64_t seed = 0;
   std::string out;
-  bool quiet = false, verbose = false, fresh = false;
+  bool quiet = false, verbose = false, fresh = false, help_markdown = false;
   double max_hours = 0;
   po::options_description cli("Command line");
-  cli.add_options()("help,h", "print this help")("config,c", po::value(&config_path),
-                                                 "experiment file (INI)")("seed", po::value(&seed),
-                                                                          "short for --run.seed")(
+  cli.add_options()("help,h", "print this help")(
+      "help-markdown", po::bool_switch(&help_markdown),
+      "print every experiment file key as Markdown tables (the reference of docs/user-guide.md)")(
+      "config,c", po::value(&config_path), "experiment file (INI)")("seed", po::value(&seed),
+                                                                    "short for --run.seed")(
       "out,o", po::value(&out), "short for --run.out")("quiet,q", po::bool_switch(&quiet),
                                                        "short for --run.quiet true")(
       "verbose,v", po::bool_switch(&verbose), "short for --run.verbose true")(
@@ -243,6 +245,11 @@ Setup parse(int argc, char** argv, bool read_seeds) {
     vm = parseOptions(argc, argv, cli, settings, nullptr, "config");
   } catch (const ConfigError& e) {
     throw;
+  }
+  if (help_markdown) {
+    setup.help = true;
+    setup.help_text = optionsMarkdown(settings);
+    return setup;
   }
   if (vm.count("help")) {
     std::ostringstream text;

@@ -3,6 +3,8 @@
 #include "cambrian/error.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -254,21 +256,56 @@ po::variables_map parseOptions(int argc, const char* const* argv,
   return vm;
 }
 
+namespace {
+
+// a default as a person writes it: "0.050000000000000003" becomes "0.05"
+std::string readableDefault(const std::string& text) {
+  char* end = nullptr;
+  double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || text.find('.') == std::string::npos)
+    return text;
+  char shorter[32];
+  std::snprintf(shorter, sizeof shorter, "%.12g", value);
+  return shorter;
+}
+
+// a table cell: pipes escaped so they do not split the cell
+std::string tableCell(const std::string& text) {
+  std::string cell;
+  for (char c : text) {
+    if (c == '|')
+      cell += '\\';
+    cell += c;
+  }
+  return cell;
+}
+
+}  // namespace
+
 std::string optionsMarkdown(const po::options_description& desc) {
   std::ostringstream out;
-  out << "| key | default | meaning |\n| --- | --- | --- |\n";
+  std::string section;
   for (const auto& option : desc.options()) {
+    // a heading and a table head whenever the section (the key's prefix) changes
+    const std::string& key = option->long_name();
+    std::string key_section = key.substr(0, key.find('.'));
+    if (key_section != section) {
+      section = key_section;
+      out << (out.tellp() > 0 ? "\n" : "") << "### [" << section << "]\n\n"
+          << "| key | default | meaning |\n| --- | --- | --- |\n";
+    }
+
+    // the default as the help prints it: format_parameter() gives "arg (=default)"
     std::string default_text;
     boost::any value;
     if (option->semantic()->apply_default(value)) {
-      // format_parameter() prints "arg (=default)"
       std::string parameter = option->format_parameter();
       auto at = parameter.find("(=");
       if (at != std::string::npos)
         default_text = parameter.substr(at + 2, parameter.size() - at - 3);
     }
-    out << "| `" << option->long_name() << "` | " << default_text << " | " << option->description()
-        << " |\n";
+    out << "| `" << key << "` | " << tableCell(readableDefault(default_text)) << " | "
+        << tableCell(option->description()) << " |\n";
   }
   return out.str();
 }

@@ -41,7 +41,9 @@ po::variables_map parseOptions(int argc, const char* const* argv,
                                const po::positional_options_description* positional,
                                const std::string& config_key = "config");
 
-/// The text of an options description as a Markdown table (docs/user-guide.md is generated so).
+/// The keys of an options description as Markdown: one "### [section]" heading and table
+/// (key, default, meaning) per key prefix, in definition order (docs/user-guide.md is
+/// generated so).
 std::string optionsMarkdown(const po::options_description& desc);
 
 }  // namespace cambrian

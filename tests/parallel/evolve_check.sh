@@ -5,6 +5,8 @@
 #               columns) of the single-rank in-process run
 #   bad_config: impossible settings exit with the config code (3) on every rank, no hang
 #   worker_failure: an exception inside a worker's evaluation becomes a failed outcome
+#   rank0_idle: rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
+#               the run's wall time (a busy-polling rank 0 would use all of it)
 set -euo pipefail
 mode=$1 cambrian=$2 mpiexec=$3 npflag=$4 np=$5 work=$6
 mpirun_() { "$mpiexec" "$npflag" "$np" --oversubscribe "$@"; }
@@ -75,6 +77,15 @@ case $mode in
     # and the others did not
     awk -F'\t' 'NR > 1 && $4 != "elite" && $2 % 5 != 0 && $6 != "ok" { bad++ }
                 END { exit bad ? 1 : 0 }' "$work/fail/individuals.tsv"
+    ;;
+  rank0_idle)
+    mpirun_ "$cambrian" evolve --config "$work/run.ini" --out "$work/idle" \
+      --task.synthetic_cost_us 20000 --task.synthetic_cost_per_gene_us 0 \
+      --evolution.population 24 --evolution.generations 3 > "$work/idle.txt"
+    cpu=$(awk '$1 == "rank0_cpu_seconds" { print $2 }' "$work/idle.txt")
+    wall=$(awk '$1 == "wall_seconds" { print $2 }' "$work/idle.txt")
+    echo "rank 0 cpu $cpu s of $wall s wall"
+    awk -v cpu="$cpu" -v wall="$wall" 'BEGIN { exit (wall > 0 && cpu < 0.25 * wall) ? 0 : 1 }'
     ;;
   *)
     echo "unknown mode $mode" >&2
