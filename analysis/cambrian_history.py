@@ -221,3 +221,21 @@ def open_or_exit(path, program):
         print(f"{program}: error: {path}: no generations written yet", file=sys.stderr)
         raise SystemExit(EXIT_INPUT)
     return attributes, individuals, generations, labels, statuses
+
+
+def tsv_lines(rows, columns):
+    """Lines of a TSV table of dict rows: the header, then one line per row (floats as %.6g)."""
+    lines = ["\t".join(columns)]
+    for row in rows:
+        lines.append("\t".join(f"{row[c]:.6g}" if isinstance(row[c], float) else str(row[c]) for c in columns))
+    return lines
+
+
+def save_figure(figure, title, output, dpi):
+    """Gives a matplotlib figure its title and layout, writes it to `output` and closes it."""
+    import matplotlib.pyplot as plt
+
+    figure.suptitle(title)
+    figure.tight_layout()
+    figure.savefig(output, dpi=dpi)
+    plt.close(figure)

@@ -123,10 +123,7 @@ def diversity(individuals, stream, pairs=2000, seed=1):
 
 def format_table(rows):
     """TSV text of the per-generation rows."""
-    lines = ["\t".join(COLUMNS)]
-    for row in rows:
-        lines.append("\t".join(f"{row[c]:.6g}" if isinstance(row[c], float) else str(row[c]) for c in COLUMNS))
-    return "\n".join(lines) + "\n"
+    return "\n".join(ch.tsv_lines(rows, COLUMNS)) + "\n"
 
 
 def plot(rows, output, title, dpi):
@@ -163,10 +160,7 @@ def plot(rows, output, title, dpi):
     a.set_xlabel("generation")
     for a in axes.flat:
         a.grid(alpha=0.3)
-    figure.suptitle(title)
-    figure.tight_layout()
-    figure.savefig(output, dpi=dpi)
-    plt.close(figure)
+    ch.save_figure(figure, title, output, dpi)
 
 
 def main(argv=None):

@@ -119,10 +119,7 @@ def plot(workers, rows, seconds, output, title, bins, dpi):
     a.set_xlabel("eval_seconds (ms)")
     a.set_ylabel("evaluations")
     a.grid(alpha=0.3)
-    figure.suptitle(title)
-    figure.tight_layout()
-    figure.savefig(output, dpi=dpi)
-    plt.close(figure)
+    ch.save_figure(figure, title, output, dpi)
 
 
 def main(argv=None):
@@ -143,8 +140,7 @@ def main(argv=None):
     # per generation
     columns = ["generation", "workers", "evaluations", "span_seconds", "busy_seconds", "idle_seconds",
                "utilisation", "imbalance"]
-    lines = ["\t".join(columns)]
-    lines += ["\t".join(f"{r[c]:.6g}" if isinstance(r[c], float) else str(r[c]) for c in columns) for r in rows]
+    lines = ch.tsv_lines(rows, columns)
     print("# per generation (utilisation = busy / (workers * span); imbalance = max / mean busy per worker)")
     print("\n".join(lines))
     if arguments.table:

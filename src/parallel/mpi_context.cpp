@@ -23,6 +23,36 @@ void check(int code, const char* call, int rank) {
                                  " failed: " + std::string(text, static_cast<std::size_t>(length)));
 }
 
+// receives a message from `source` with `tag` (either may be a wildcard) into `out` when one is
+// waiting: probe without blocking, then receive exactly what is there; false when none is
+bool receiveWaiting(int source, int tag, int rank, Message& out) {
+  int flag = 0;
+  MPI_Status status;
+  check(MPI_Iprobe(source, tag, MPI_COMM_WORLD, &flag, &status), "MPI_Iprobe", rank);
+  if (!flag)
+    return false;
+  int count = 0;
+  MPI_Get_count(&status, MPI_BYTE, &count);
+  out.bytes.resize(static_cast<std::size_t>(count));
+  check(MPI_Recv(out.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG,
+                 MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+        "MPI_Recv", rank);
+  out.source = status.MPI_SOURCE;
+  out.tag = static_cast<Tag>(status.MPI_TAG);
+  return true;
+}
+
+// waits until tryOnce(message) receives one: probe and sleep, since Open MPI's blocking
+// receive would spin a core
+template <class Try>
+Message waitFor(Try tryOnce) {
+  Message message;
+  Backoff backoff;
+  while (!tryOnce(message))
+    backoff.wait();
+  return message;
+}
+
 }  // namespace
 
 MpiContext::MpiContext(int* argc, char*** argv) {
@@ -54,59 +84,21 @@ void MpiContext::send(int destination, Tag tag, const std::vector<std::uint8_t>&
 }
 
 bool MpiContext::tryReceiveAny(int source, Message& out) {
-  // probe without blocking, then receive exactly what is there
-  int flag = 0;
-  MPI_Status status;
-  check(
-      MPI_Iprobe(source < 0 ? MPI_ANY_SOURCE : source, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status),
-      "MPI_Iprobe", rank_);
-  if (!flag)
-    return false;
-  int count = 0;
-  MPI_Get_count(&status, MPI_BYTE, &count);
-  out.bytes.resize(static_cast<std::size_t>(count));
-  check(MPI_Recv(out.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG,
-                 MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-        "MPI_Recv", rank_);
-  out.source = status.MPI_SOURCE;
-  out.tag = static_cast<Tag>(status.MPI_TAG);
-  return true;
+  // any tag, from `source` or (when negative) any rank
+  return receiveWaiting(source < 0 ? MPI_ANY_SOURCE : source, MPI_ANY_TAG, rank_, out);
 }
 
 bool MpiContext::tryReceive(Tag tag, Message& out) {
-  // probe for the tag without blocking, then receive it
-  int flag = 0;
-  MPI_Status status;
-  check(MPI_Iprobe(MPI_ANY_SOURCE, static_cast<int>(tag), MPI_COMM_WORLD, &flag, &status),
-        "MPI_Iprobe", rank_);
-  if (!flag)
-    return false;
-  int count = 0;
-  MPI_Get_count(&status, MPI_BYTE, &count);
-  out.bytes.resize(static_cast<std::size_t>(count));
-  check(MPI_Recv(out.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG,
-                 MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-        "MPI_Recv", rank_);
-  out.source = status.MPI_SOURCE;
-  out.tag = tag;
-  return true;
+  // this tag, from any rank
+  return receiveWaiting(MPI_ANY_SOURCE, static_cast<int>(tag), rank_, out);
 }
 
 Message MpiContext::receiveAny(int source) {
-  // probe and sleep: Open MPI's blocking receive would spin a core
-  Message message;
-  Backoff backoff;
-  while (!tryReceiveAny(source, message))
-    backoff.wait();
-  return message;
+  return waitFor([&](Message& message) { return tryReceiveAny(source, message); });
 }
 
 Message MpiContext::receive(Tag tag) {
-  Message message;
-  Backoff backoff;
-  while (!tryReceive(tag, message))
-    backoff.wait();
-  return message;
+  return waitFor([&](Message& message) { return tryReceive(tag, message); });
 }
 
 int MpiContext::allReduceMax(int value) {

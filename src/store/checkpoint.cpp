@@ -4,10 +4,12 @@
 #include "cambrian/genome.hpp"
 #include "cambrian/version.hpp"
 
+#include "store/hdf5_io.hpp"
 #include "store/history.hpp"
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -16,64 +18,15 @@
 #include <set>
 #include <sstream>
 #include <system_error>
-#include <type_traits>
 #include <unistd.h>
 #include <vector>
 
 namespace cambrian {
 
+// the store module's HDF5 helpers
+using namespace hdf5;
+
 namespace {
-
-// one HDF5 identifier, closed with the matching function
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*closer)(hid_t)) : id_(id), close_(closer) {}
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() { reset(); }
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  herr_t reset() {
-    herr_t status = 0;
-    if (id_ >= 0)
-      status = close_(id_);
-    id_ = -1;
-    return status;
-  }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-// silences HDF5's error stack printing while alive (errors become ours)
-class QuietErrors {
- public:
-  QuietErrors() {
-    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-  QuietErrors(const QuietErrors&) = delete;
-  QuietErrors& operator=(const QuietErrors&) = delete;
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
-
-// the native HDF5 type of a column's C++ type
-template <class T>
-hid_t nativeType() {
-  if constexpr (std::is_same_v<T, std::uint64_t>)
-    return H5T_NATIVE_UINT64;
-  else if constexpr (std::is_same_v<T, std::int32_t>)
-    return H5T_NATIVE_INT32;
-  else if constexpr (std::is_same_v<T, std::uint8_t>)
-    return H5T_NATIVE_UINT8;
-  else
-    return H5T_NATIVE_DOUBLE;
-}
 
 // the columns of /population, as flat vectors
 struct Columns {
@@ -247,99 +200,26 @@ Population fromColumns(const Columns& c, std::uint64_t generation) {
   return population;
 }
 
-// a variable-length UTF-8 string type
-hid_t newStringType() {
-  hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, H5T_VARIABLE);
-  H5Tset_cset(type, H5T_CSET_UTF8);
-  return type;
-}
-
-// attribute writers: false on failure
-bool writeString(hid_t location, const char* name, const std::string& value) {
-  Handle type(newStringType(), H5Tclose);
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose);
-  const char* text = value.c_str();
-  return attribute.valid() && H5Awrite(attribute.get(), type.get(), &text) >= 0;
-}
-
-template <class T>
-bool writeScalar(hid_t location, const char* name, T value) {
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attribute(
-      H5Acreate2(location, name, nativeType<T>(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  return attribute.valid() && H5Awrite(attribute.get(), nativeType<T>(), &value) >= 0;
-}
-
-// attribute readers: false when missing or of the wrong kind
-bool readString(hid_t location, const char* name, std::string& value) {
-  if (H5Aexists(location, name) <= 0)
-    return false;
-  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
-  Handle type(H5Aget_type(attribute.get()), H5Tclose);
-  if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING ||
-      H5Tis_variable_str(type.get()) <= 0)
-    return false;
-  Handle memory(newStringType(), H5Tclose);
-  char* text = nullptr;
-  if (H5Aread(attribute.get(), memory.get(), &text) < 0 || !text)
-    return false;
-  value = text;
-  H5free_memory(text);
-  return true;
-}
-
-template <class T>
-bool readScalar(hid_t location, const char* name, T& value) {
-  if (H5Aexists(location, name) <= 0)
-    return false;
-  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
-  Handle type(H5Aget_type(attribute.get()), H5Tclose);
-  Handle space(H5Aget_space(attribute.get()), H5Sclose);
-  if (!type.valid() || H5Tget_class(type.get()) != H5T_INTEGER ||
-      H5Sget_simple_extent_npoints(space.get()) != 1)
-    return false;
-  return H5Aread(attribute.get(), nativeType<T>(), &value) >= 0;
-}
-
 // a 1-D dataset holding `values` (fletcher32-checked chunks when not empty); false on failure
 template <class T>
 bool writeColumn(hid_t group, const char* name, const std::vector<T>& values) {
   hsize_t size = values.size();
-  Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose);
   Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   if (size > 0) {
     hsize_t chunk = std::min<hsize_t>(size, 65536);
     H5Pset_chunk(properties.get(), 1, &chunk);
     H5Pset_fletcher32(properties.get());
   }
-  Handle dataset(H5Dcreate2(group, name, nativeType<T>(), space.get(), H5P_DEFAULT,
-                            properties.get(), H5P_DEFAULT),
-                 H5Dclose);
-  if (!dataset.valid())
-    return false;
-  return size == 0 || H5Dwrite(dataset.get(), nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                               values.data()) >= 0;
+  return writeDataset(group, name, {size}, nativeType<T>(), values.data(), properties.get())
+      .valid();
 }
 
 // a whole 1-D dataset; false when missing, of another shape or unreadable (checksum errors)
 template <class T>
 bool readColumn(hid_t group, const char* name, std::vector<T>& values) {
-  if (H5Lexists(group, name, H5P_DEFAULT) <= 0)
-    return false;
-  Handle dataset(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
-  if (!dataset.valid())
-    return false;
-  Handle space(H5Dget_space(dataset.get()), H5Sclose);
-  hsize_t size = 0;
-  if (H5Sget_simple_extent_ndims(space.get()) != 1 ||
-      H5Sget_simple_extent_dims(space.get(), &size, nullptr) != 1)
-    return false;
-  values.resize(size);
-  return size == 0 ||
-         H5Dread(dataset.get(), nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0;
+  std::vector<hsize_t> dims;
+  Handle dataset = openDataset(group, name, 1, dims);
+  return dataset.valid() && readValues(dataset.get(), dims[0], values);
 }
 
 // fsync of a file or directory by path; false on failure
@@ -359,18 +239,14 @@ void writeFile(const std::string& path, const CheckpointState& state,
   auto fail = [&](const std::string& what) {
     throw Error(ExitCode::output_file, path + ": " + what);
   };
-  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-  H5Pset_libver_bounds(access.get(), H5F_LIBVER_V110, H5F_LIBVER_LATEST);
-  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
+  Handle file = createFile(path, H5F_LIBVER_V110);
   if (!file.valid())
     fail("cannot create HDF5 file");
   Columns columns = toColumns(state.population);
 
   // the root attributes: format, provenance, counters, state hash
   hid_t f = file.get();
-  bool ok = writeString(f, "format", kCheckpointFormatName) &&
-            writeScalar<std::int32_t>(f, "format_version", kCheckpointFormatVersion) &&
-            writeString(f, "cambrian_version", kVersion) && writeString(f, "git_hash", kGitHash) &&
+  bool ok = writeFormat(f, kCheckpointFormatName, kCheckpointFormatVersion, kVersion, kGitHash) &&
             writeString(f, "config_text", state.config_text) &&
             writeString(f, "config_hash", resultConfigHash(state.config_text)) &&
             writeScalar<std::uint64_t>(f, "seed", state.seed) &&
@@ -459,34 +335,17 @@ CheckpointState readCheckpoint(const std::string& path) {
   };
 
   // missing, not HDF5, truncated or corrupt
-  std::error_code error;
-  if (!std::filesystem::exists(path, error))
-    fail("no such checkpoint file");
-  if (!std::filesystem::is_regular_file(path, error))
-    fail("not a regular file");
-  htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
-  if (is_hdf5 == 0)
-    fail("not an HDF5 file (no HDF5 signature)");
-  if (is_hdf5 < 0)
-    fail("cannot read the HDF5 signature (unreadable or truncated file)");
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  std::string problem;
+  Handle file = openFile(path, "checkpoint", false, problem);
   if (!file.valid())
-    fail("HDF5 file cannot be opened (truncated or corrupt)");
+    fail(problem);
   hid_t f = file.get();
 
   // a cambrian checkpoint of a version we read
-  std::string format;
-  if (!readString(f, "format", format))
-    fail("not a cambrian checkpoint (HDF5 file without the root attribute 'format')");
-  if (format != kCheckpointFormatName)
-    fail("not a cambrian checkpoint (root attribute 'format' is '" + format + "', expected '" +
-         kCheckpointFormatName + "')");
   std::int32_t version = 0;
-  if (!readScalar(f, "format_version", version))
-    fail("root attribute 'format_version' missing or not an integer");
-  if (version < 1 || version > kCheckpointFormatVersion)
-    fail("format_version " + std::to_string(version) + " is not supported (this cambrian reads " +
-         std::to_string(kCheckpointFormatVersion) + ")");
+  problem = checkFormat(f, "checkpoint", kCheckpointFormatName, kCheckpointFormatVersion, version);
+  if (!problem.empty())
+    fail(problem);
 
   // the scalar state
   CheckpointState state;

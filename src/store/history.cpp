@@ -3,6 +3,8 @@
 #include "cambrian/error.hpp"
 #include "cambrian/version.hpp"
 
+#include "store/hdf5_io.hpp"
+
 #include <hdf5.h>
 
 #include <algorithm>
@@ -18,74 +20,15 @@
 
 namespace cambrian {
 
+// the store module's HDF5 helpers
+using namespace hdf5;
+
 namespace {
 
 // rows per chunk of the per-row datasets; bytes per chunk of the genome byte stream
 constexpr hsize_t kRowChunk = 1024;
 constexpr hsize_t kByteChunk = 65536;
 constexpr int kDeflateLevel = 4;
-
-// one HDF5 identifier, closed with the matching function
-class Handle {
- public:
-  Handle() = default;
-  Handle(hid_t id, herr_t (*closer)(hid_t)) : id_(id), close_(closer) {}
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
-  Handle& operator=(Handle&& other) noexcept {
-    if (this != &other) {
-      reset();
-      id_ = other.id_;
-      close_ = other.close_;
-      other.id_ = -1;
-    }
-    return *this;
-  }
-  ~Handle() { reset(); }
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  herr_t reset() {
-    herr_t status = 0;
-    if (id_ >= 0 && close_)
-      status = close_(id_);
-    id_ = -1;
-    return status;
-  }
-
- private:
-  hid_t id_ = -1;
-  herr_t (*close_)(hid_t) = nullptr;
-};
-
-// silences HDF5's error stack printing for the lifetime of the object (errors become ours)
-class QuietErrors {
- public:
-  QuietErrors() {
-    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-  QuietErrors(const QuietErrors&) = delete;
-  QuietErrors& operator=(const QuietErrors&) = delete;
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
-
-// the native HDF5 type of a column's C++ type
-template <class T>
-hid_t nativeType() {
-  if constexpr (std::is_same_v<T, std::uint64_t>)
-    return H5T_NATIVE_UINT64;
-  else if constexpr (std::is_same_v<T, std::int32_t>)
-    return H5T_NATIVE_INT32;
-  else if constexpr (std::is_same_v<T, std::uint8_t>)
-    return H5T_NATIVE_UINT8;
-  else
-    return H5T_NATIVE_DOUBLE;
-}
 
 // a column of a table group: name, stored type, width (1, or the measure count), unit, meaning
 struct Column {
@@ -172,85 +115,6 @@ std::vector<std::string> statusNames() {
   return names;
 }
 
-// a variable-length UTF-8 string type
-Handle stringType() {
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(type.get(), H5T_VARIABLE);
-  H5Tset_cset(type.get(), H5T_CSET_UTF8);
-  return type;
-}
-
-// attribute writers (they return false on failure; the caller names the file)
-bool writeString(hid_t location, const char* name, const std::string& value) {
-  Handle type = stringType();
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose);
-  const char* text = value.c_str();
-  return attribute.valid() && H5Awrite(attribute.get(), type.get(), &text) >= 0;
-}
-
-bool writeStrings(hid_t location, const char* name, const std::vector<std::string>& values) {
-  Handle type = stringType();
-  hsize_t size = values.size();
-  Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose);
-  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose);
-  std::vector<const char*> texts;
-  for (const std::string& value : values)
-    texts.push_back(value.c_str());
-  return attribute.valid() && H5Awrite(attribute.get(), type.get(), texts.data()) >= 0;
-}
-
-template <class T>
-bool writeScalar(hid_t location, const char* name, T value) {
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attribute(
-      H5Acreate2(location, name, nativeType<T>(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  return attribute.valid() && H5Awrite(attribute.get(), nativeType<T>(), &value) >= 0;
-}
-
-// attribute readers: nullopt-like false when missing or of the wrong kind
-bool readString(hid_t location, const char* name, std::string& value) {
-  if (H5Aexists(location, name) <= 0)
-    return false;
-  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
-  Handle type(H5Aget_type(attribute.get()), H5Tclose);
-  if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING)
-    return false;
-  Handle space(H5Aget_space(attribute.get()), H5Sclose);
-  if (H5Sget_simple_extent_npoints(space.get()) != 1)
-    return false;
-  if (H5Tis_variable_str(type.get()) > 0) {
-    Handle memory = stringType();
-    char* text = nullptr;
-    if (H5Aread(attribute.get(), memory.get(), &text) < 0 || !text)
-      return false;
-    value = text;
-    H5free_memory(text);
-    return true;
-  }
-  std::size_t size = H5Tget_size(type.get());
-  std::string buffer(size, '\0');
-  if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0)
-    return false;
-  value = buffer.substr(0, buffer.find('\0'));
-  return true;
-}
-
-template <class T>
-bool readScalar(hid_t location, const char* name, T& value) {
-  if (H5Aexists(location, name) <= 0)
-    return false;
-  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
-  Handle type(H5Aget_type(attribute.get()), H5Tclose);
-  Handle space(H5Aget_space(attribute.get()), H5Sclose);
-  if (!type.valid() || H5Tget_class(type.get()) != H5T_INTEGER ||
-      H5Sget_simple_extent_npoints(space.get()) != 1)
-    return false;
-  return H5Aread(attribute.get(), nativeType<T>(), &value) >= 0;
-}
-
 // an empty extendible chunked deflate dataset of `width` columns (1: a 1-D dataset)
 Handle createTable(hid_t group, const char* name, hid_t type, hsize_t width, hsize_t chunk) {
   int rank = width == 1 ? 1 : 2;
@@ -267,6 +131,21 @@ Handle createTable(hid_t group, const char* name, hid_t type, hsize_t width, hsi
       H5Dclose);
 }
 
+// writes `rows` rows of `width` values into a dataset from row `start` on; false on failure
+bool writeRows(hid_t dataset, hid_t memory_type, const void* data, hsize_t start, hsize_t rows,
+               hsize_t width) {
+  Handle file_space(H5Dget_space(dataset), H5Sclose);
+  int rank = H5Sget_simple_extent_ndims(file_space.get());
+  hsize_t offset[2] = {start, 0};
+  hsize_t count[2] = {rows, width};
+  if (rank < 1 || rank > 2 ||
+      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr) < 0)
+    return false;
+  Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
+  return H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data) >=
+         0;
+}
+
 // appends `rows` rows of `width` values to a dataset; false on failure
 bool appendRows(hid_t dataset, hid_t memory_type, const void* data, hsize_t rows, hsize_t width) {
   Handle space(H5Dget_space(dataset), H5Sclose);
@@ -278,16 +157,7 @@ bool appendRows(hid_t dataset, hid_t memory_type, const void* data, hsize_t rows
   dims[0] += rows;
   if (H5Dset_extent(dataset, dims) < 0)
     return false;
-  if (rows == 0)
-    return true;
-  Handle file_space(H5Dget_space(dataset), H5Sclose);
-  hsize_t offset[2] = {start, 0};
-  hsize_t count[2] = {rows, width};
-  if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr) < 0)
-    return false;
-  Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
-  return H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data) >=
-         0;
+  return rows == 0 || writeRows(dataset, memory_type, data, start, rows, width);
 }
 
 // the values of one field of every row, as the column's type
@@ -304,21 +174,39 @@ std::vector<T> gather(const std::vector<Row>& rows, Get get) {
 template <class T>
 bool readTable(hid_t group, const char* name, hsize_t width, std::vector<T>& values,
                hsize_t& rows) {
-  if (H5Lexists(group, name, H5P_DEFAULT) <= 0)
-    return false;
-  Handle dataset(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
-  if (!dataset.valid())
-    return false;
-  Handle space(H5Dget_space(dataset.get()), H5Sclose);
-  hsize_t dims[2] = {0, 1};
-  int rank = H5Sget_simple_extent_dims(space.get(), dims, nullptr);
-  if (rank < 1 || rank > 2 || (rank == 1 && width != 1) || (rank == 2 && dims[1] != width))
+  std::vector<hsize_t> dims;
+  Handle dataset = openDataset(group, name, 2, dims);
+  if (!dataset.valid() || (dims.size() == 1 && width != 1) ||
+      (dims.size() == 2 && dims[1] != width))
     return false;
   rows = dims[0];
-  values.resize(rows * width);
-  if (rows == 0)
-    return true;
-  return H5Dread(dataset.get(), nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0;
+  return readValues(dataset.get(), rows * width, values);
+}
+
+// calls visit(name, field) for every field of a generation row, in column order
+template <class G, class Visit>
+void forEachGenerationField(G& g, Visit visit) {
+  visit("generation", g.generation);
+  visit("count", g.count);
+  visit("failed", g.failed);
+  visit("best", g.best);
+  visit("mean", g.mean);
+  visit("stddev", g.stddev);
+  visit("worst", g.worst);
+  visit("q25", g.q25);
+  visit("median", g.median);
+  visit("q75", g.q75);
+  visit("best_id", g.best_id);
+  visit("evaluations", g.evaluations);
+  visit("workers", g.workers);
+  visit("distinct_genomes", g.distinct_genomes);
+  visit("rank0_serial_seconds", g.rank0_serial_seconds);
+  visit("evaluation_span_seconds", g.evaluation_span_seconds);
+  visit("worker_busy_seconds", g.worker_busy_seconds);
+  visit("worker_idle_seconds", g.worker_idle_seconds);
+  visit("checkpoint_seconds", g.checkpoint_seconds);
+  visit("wall_seconds", g.wall_seconds);
+  visit("unix_time", g.unix_time);
 }
 
 // FNV-1a 64 over bytes
@@ -445,10 +333,7 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
   };
 
   // the file, newest format (SWMR needs it)
-  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-  H5Pset_libver_bounds(access.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
-  impl_->file =
-      Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
+  impl_->file = createFile(path_, H5F_LIBVER_LATEST);
   if (!impl_->file.valid())
     fail("cannot create HDF5 file");
   hid_t file = impl_->file.get();
@@ -462,10 +347,8 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
     attributes.cambrian_version = kVersion;
   if (attributes.git_hash.empty())
     attributes.git_hash = kGitHash;
-  bool ok = writeString(file, "format", kHistoryFormatName) &&
-            writeScalar<std::int32_t>(file, "format_version", kHistoryFormatVersion) &&
-            writeString(file, "cambrian_version", attributes.cambrian_version) &&
-            writeString(file, "git_hash", attributes.git_hash) &&
+  bool ok = writeFormat(file, kHistoryFormatName, kHistoryFormatVersion,
+                        attributes.cambrian_version, attributes.git_hash) &&
             writeString(file, "config_text", attributes.config_text) &&
             writeString(file, "config_hash", attributes.config_hash) &&
             writeScalar<std::uint64_t>(file, "seed", attributes.seed) &&
@@ -484,8 +367,7 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
     for (const Column& column : columns) {
       Handle dataset =
           createTable(group.get(), column.name, column.type(), column.width, kRowChunk);
-      if (!dataset.valid() || !writeString(dataset.get(), "units", column.units) ||
-          !writeString(dataset.get(), "description", column.description))
+      if (!dataset.valid() || !describe(dataset.get(), column.units, column.description))
         fail(std::string("cannot create dataset /") + name + "/" + column.name);
       datasets.emplace(column.name, std::move(dataset));
     }
@@ -513,10 +395,10 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
   // the genome byte stream
   impl_->genome_bytes =
       createTable(individuals.get(), "genome_bytes", H5T_NATIVE_UINT8, 1, kByteChunk);
-  if (!impl_->genome_bytes.valid() || !writeString(impl_->genome_bytes.get(), "units", "byte") ||
-      !writeString(impl_->genome_bytes.get(), "description",
-                   "serialized genomes (serializeGenome), concatenated; row i is "
-                   "genome_bytes[genome_offset[i] : genome_offset[i] + genome_size[i]]"))
+  if (!impl_->genome_bytes.valid() ||
+      !describe(impl_->genome_bytes.get(), "byte",
+                "serialized genomes (serializeGenome), concatenated; row i is "
+                "genome_bytes[genome_offset[i] : genome_offset[i] + genome_size[i]]"))
     fail("cannot create dataset /individuals/genome_bytes");
 
   // from here on readers may open the file while it grows
@@ -590,28 +472,9 @@ void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
     generation.unix_time = unixNow();
   const HistoryGeneration& g = generation;
   auto& e = m.generations;
-  auto one = [](auto value) { return std::vector<decltype(value)>{value}; };
-  append(e, "generation", one(u64{g.generation}), 1);
-  append(e, "count", one(u64{g.count}), 1);
-  append(e, "failed", one(u64{g.failed}), 1);
-  append(e, "best", one(g.best), 1);
-  append(e, "mean", one(g.mean), 1);
-  append(e, "stddev", one(g.stddev), 1);
-  append(e, "worst", one(g.worst), 1);
-  append(e, "q25", one(g.q25), 1);
-  append(e, "median", one(g.median), 1);
-  append(e, "q75", one(g.q75), 1);
-  append(e, "best_id", one(u64{g.best_id}), 1);
-  append(e, "evaluations", one(u64{g.evaluations}), 1);
-  append(e, "workers", one(i32{g.workers}), 1);
-  append(e, "distinct_genomes", one(u64{g.distinct_genomes}), 1);
-  append(e, "rank0_serial_seconds", one(g.rank0_serial_seconds), 1);
-  append(e, "evaluation_span_seconds", one(g.evaluation_span_seconds), 1);
-  append(e, "worker_busy_seconds", one(g.worker_busy_seconds), 1);
-  append(e, "worker_idle_seconds", one(g.worker_idle_seconds), 1);
-  append(e, "checkpoint_seconds", one(g.checkpoint_seconds), 1);
-  append(e, "wall_seconds", one(g.wall_seconds), 1);
-  append(e, "unix_time", one(g.unix_time), 1);
+  forEachGenerationField(g, [&](const char* name, auto value) {
+    append(e, name, std::vector<decltype(value)>{value}, 1);
+  });
 
   // durable before the next generation starts
   if (!ok || H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL) < 0) {
@@ -631,13 +494,9 @@ void HistoryWriter::setCheckpointSeconds(double seconds) {
   hsize_t rows = 0;
   if (H5Sget_simple_extent_dims(space.get(), &rows, nullptr) != 1 || rows == 0)
     return;
-  hsize_t offset = rows - 1, count = 1;
-  Handle memory_space(H5Screate_simple(1, &count, nullptr), H5Sclose);
-  bool ok =
-      H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr) >= 0 &&
-      H5Dwrite(dataset, H5T_NATIVE_DOUBLE, memory_space.get(), space.get(), H5P_DEFAULT,
-               &seconds) >= 0 &&
-      H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL) >= 0;
+  hsize_t offset = rows - 1;
+  bool ok = writeRows(dataset, H5T_NATIVE_DOUBLE, &seconds, offset, 1, 1) &&
+            H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL) >= 0;
   if (!ok)
     throw Error(ExitCode::output_file,
                 path_ + ": cannot write checkpoint_seconds of row " + std::to_string(offset));
@@ -719,38 +578,18 @@ HistoryReader::HistoryReader(const std::string& path)
   QuietErrors quiet;
   auto fail = [&](const std::string& what) { throw InputError(path_ + ": " + what); };
 
-  // missing, not HDF5, truncated or corrupt
-  std::error_code error;
-  if (!std::filesystem::exists(path_, error))
-    fail("no such history file");
-  if (!std::filesystem::is_regular_file(path_, error))
-    fail("not a regular file");
-  htri_t is_hdf5 = H5Fis_hdf5(path_.c_str());
-  if (is_hdf5 == 0)
-    fail("not an HDF5 file (no HDF5 signature)");
-  if (is_hdf5 < 0)
-    fail("cannot read the HDF5 signature (unreadable or truncated file)");
-  impl_->file =
-      Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT), H5Fclose);
+  // missing, not HDF5, truncated or corrupt (a file still being written opens for SWMR reading)
+  std::string problem;
+  impl_->file = openFile(path_, "history", true, problem);
   if (!impl_->file.valid())
-    impl_->file = Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!impl_->file.valid())
-    fail("HDF5 file cannot be opened (truncated or corrupt)");
+    fail(problem);
   hid_t file = impl_->file.get();
 
   // a cambrian history of a version we read
-  std::string format;
-  if (!readString(file, "format", format))
-    fail("not a cambrian history (HDF5 file without the root attribute 'format')");
-  if (format != kHistoryFormatName)
-    fail("not a cambrian history (root attribute 'format' is '" + format + "', expected '" +
-         kHistoryFormatName + "')");
   std::int32_t version = 0;
-  if (!readScalar(file, "format_version", version))
-    fail("root attribute 'format_version' missing or not an integer");
-  if (version < 1 || version > kHistoryFormatVersion)
-    fail("format_version " + std::to_string(version) + " is not supported (this cambrian reads " +
-         std::to_string(kHistoryFormatVersion) + ")");
+  problem = checkFormat(file, "history", kHistoryFormatName, kHistoryFormatVersion, version);
+  if (!problem.empty())
+    fail(problem);
   HistoryAttributes& a = attributes_;
   a.format_version = version;
   std::int32_t ranks = 0;
@@ -863,29 +702,13 @@ std::vector<HistoryGeneration> HistoryReader::generations() const {
   std::vector<HistoryGeneration> result(rows);
   for (hsize_t i = 0; i < rows; ++i) {
     HistoryGeneration& g = result[i];
-    auto r = [&](const char* name) { return reals.at(name)[i]; };
-    auto n = [&](const char* name) { return integers.at(name)[i]; };
-    g.generation = n("generation");
-    g.count = n("count");
-    g.failed = n("failed");
-    g.best = r("best");
-    g.mean = r("mean");
-    g.stddev = r("stddev");
-    g.worst = r("worst");
-    g.q25 = r("q25");
-    g.median = r("median");
-    g.q75 = r("q75");
-    g.best_id = n("best_id");
-    g.evaluations = n("evaluations");
-    g.workers = static_cast<int>(n("workers"));
-    g.distinct_genomes = n("distinct_genomes");
-    g.rank0_serial_seconds = r("rank0_serial_seconds");
-    g.evaluation_span_seconds = r("evaluation_span_seconds");
-    g.worker_busy_seconds = r("worker_busy_seconds");
-    g.worker_idle_seconds = r("worker_idle_seconds");
-    g.checkpoint_seconds = r("checkpoint_seconds");
-    g.wall_seconds = r("wall_seconds");
-    g.unix_time = r("unix_time");
+    forEachGenerationField(g, [&](const char* name, auto& field) {
+      using T = std::decay_t<decltype(field)>;
+      if constexpr (std::is_floating_point_v<T>)
+        field = reals.at(name)[i];
+      else
+        field = static_cast<T>(integers.at(name)[i]);
+    });
   }
   return result;
 }

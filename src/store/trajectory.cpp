@@ -3,6 +3,8 @@
 #include "cambrian/error.hpp"
 #include "cambrian/version.hpp"
 
+#include "store/hdf5_io.hpp"
+
 #include <hdf5.h>
 
 #include <algorithm>
@@ -11,66 +13,14 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <sstream>
-#include <type_traits>
 #include <unistd.h>
 
 namespace cambrian {
 
+// the store module's HDF5 helpers
+using namespace hdf5;
+
 namespace {
-
-// one HDF5 identifier, closed with the matching function
-class Handle {
- public:
-  Handle() = default;
-  Handle(hid_t id, herr_t (*closer)(hid_t)) : id_(id), close_(closer) {}
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
-  Handle& operator=(Handle&&) = delete;
-  ~Handle() { reset(); }
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  herr_t reset() {
-    herr_t status = 0;
-    if (id_ >= 0 && close_)
-      status = close_(id_);
-    id_ = -1;
-    return status;
-  }
-
- private:
-  hid_t id_ = -1;
-  herr_t (*close_)(hid_t) = nullptr;
-};
-
-// silences HDF5's error stack printing while alive (errors become ours)
-class QuietErrors {
- public:
-  QuietErrors() {
-    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-  QuietErrors(const QuietErrors&) = delete;
-  QuietErrors& operator=(const QuietErrors&) = delete;
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
-
-// the native HDF5 type of a C++ value type
-template <class T>
-hid_t nativeType() {
-  if constexpr (std::is_same_v<T, std::uint64_t>)
-    return H5T_NATIVE_UINT64;
-  else if constexpr (std::is_same_v<T, std::int32_t>)
-    return H5T_NATIVE_INT32;
-  else if constexpr (std::is_same_v<T, std::uint8_t>)
-    return H5T_NATIVE_UINT8;
-  else
-    return H5T_NATIVE_DOUBLE;
-}
 
 // the phase names, index = EvalPhase value
 const std::vector<std::string>& phaseNames() {
@@ -80,125 +30,25 @@ const std::vector<std::string>& phaseNames() {
   return names;
 }
 
-// a variable-length UTF-8 string type
-Handle stringType() {
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(type.get(), H5T_VARIABLE);
-  H5Tset_cset(type.get(), H5T_CSET_UTF8);
-  return type;
-}
-
-// attribute writers: false on failure (the caller names the file)
-bool writeString(hid_t location, const char* name, const std::string& value) {
-  Handle type = stringType();
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose);
-  const char* text = value.c_str();
-  return attribute.valid() && H5Awrite(attribute.get(), type.get(), &text) >= 0;
-}
-
-bool writeStrings(hid_t location, const char* name, const std::vector<std::string>& values) {
-  Handle type = stringType();
-  hsize_t size = values.size();
-  Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose);
-  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose);
-  std::vector<const char*> texts;
-  for (const std::string& value : values)
-    texts.push_back(value.c_str());
-  return attribute.valid() && H5Awrite(attribute.get(), type.get(), texts.data()) >= 0;
-}
-
-template <class T>
-bool writeScalar(hid_t location, const char* name, T value) {
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attribute(
-      H5Acreate2(location, name, nativeType<T>(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  return attribute.valid() && H5Awrite(attribute.get(), nativeType<T>(), &value) >= 0;
-}
-
-// attribute readers: false when missing or of the wrong kind
-bool readString(hid_t location, const char* name, std::string& value) {
-  if (H5Aexists(location, name) <= 0)
-    return false;
-  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
-  Handle type(H5Aget_type(attribute.get()), H5Tclose);
-  if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING)
-    return false;
-  Handle space(H5Aget_space(attribute.get()), H5Sclose);
-  if (H5Sget_simple_extent_npoints(space.get()) != 1)
-    return false;
-  if (H5Tis_variable_str(type.get()) > 0) {
-    Handle memory = stringType();
-    char* text = nullptr;
-    if (H5Aread(attribute.get(), memory.get(), &text) < 0 || !text)
-      return false;
-    value = text;
-    H5free_memory(text);
-    return true;
-  }
-  std::string buffer(H5Tget_size(type.get()), '\0');
-  if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0)
-    return false;
-  value = buffer.substr(0, buffer.find('\0'));
-  return true;
-}
-
-template <class T>
-bool readScalar(hid_t location, const char* name, T& value) {
-  if (H5Aexists(location, name) <= 0)
-    return false;
-  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
-  Handle type(H5Aget_type(attribute.get()), H5Tclose);
-  Handle space(H5Aget_space(attribute.get()), H5Sclose);
-  H5T_class_t wanted = std::is_floating_point_v<T> ? H5T_FLOAT : H5T_INTEGER;
-  if (!type.valid() || H5Tget_class(type.get()) != wanted ||
-      H5Sget_simple_extent_npoints(space.get()) != 1)
-    return false;
-  return H5Aread(attribute.get(), nativeType<T>(), &value) >= 0;
-}
-
-// a dataset of `dims` holding `values` (row-major), with units and a description
-bool writeDataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, hid_t type,
-                  const void* values, const char* units, const char* description) {
-  Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-  Handle dataset(
-      H5Dcreate2(location, name, type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-      H5Dclose);
-  if (!dataset.valid())
-    return false;
-  hsize_t count = 1;
-  for (hsize_t d : dims)
-    count *= d;
-  if (count > 0 && H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0)
-    return false;
-  return writeString(dataset.get(), "units", units) &&
-         writeString(dataset.get(), "description", description);
+// a dataset of `dims` holding `values` (row-major), with units and a description; false on
+// failure
+bool writeDescribed(hid_t location, const char* name, const std::vector<hsize_t>& dims, hid_t type,
+                    const void* values, const char* units, const char* description) {
+  Handle dataset = writeDataset(location, name, dims, type, values);
+  return dataset.valid() && describe(dataset.get(), units, description);
 }
 
 // a whole dataset as T values; `dims` gets its shape. False when missing or unreadable
 template <class T>
 bool readDataset(hid_t location, const char* name, std::vector<T>& values,
                  std::vector<hsize_t>& dims) {
-  if (H5Lexists(location, name, H5P_DEFAULT) <= 0)
-    return false;
-  Handle dataset(H5Dopen2(location, name, H5P_DEFAULT), H5Dclose);
+  Handle dataset = openDataset(location, name, 3, dims);
   if (!dataset.valid())
     return false;
-  Handle space(H5Dget_space(dataset.get()), H5Sclose);
-  int rank = H5Sget_simple_extent_ndims(space.get());
-  if (rank < 1 || rank > 3)
-    return false;
-  dims.assign(static_cast<std::size_t>(rank), 0);
-  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
   hsize_t count = 1;
   for (hsize_t d : dims)
     count *= d;
-  values.resize(count);
-  if (count == 0)
-    return true;
-  return H5Dread(dataset.get(), nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0;
+  return readValues(dataset.get(), count, values);
 }
 
 // flushes a closed file's data to the disk (best effort: a failure shows up at rename)
@@ -214,17 +64,15 @@ void syncFile(const std::string& path) {
 bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
   // root attributes: format, provenance, outcome
   what = "the root attributes";
-  bool ok = writeString(file, "format", kTrajectoryFormatName) &&
-            writeScalar<std::int32_t>(file, "format_version", kTrajectoryFormatVersion) &&
-            writeString(file, "cambrian_version", kVersion) &&
-            writeString(file, "git_hash", kGitHash) &&
-            writeScalar<std::uint64_t>(file, "creature_id", t.creature_id) &&
-            writeString(file, "source", t.source) && writeScalar(file, "fitness", t.fitness) &&
-            writeString(file, "status", t.status) && writeString(file, "task", t.task) &&
-            writeScalar(file, "time_step", t.time_step) &&
-            writeScalar<std::uint64_t>(file, "frame_stride", t.frame_stride) &&
-            writeScalar(file, "frame_rate", t.frame_rate) &&
-            writeString(file, "genome_text", t.genome_text);
+  bool ok =
+      writeFormat(file, kTrajectoryFormatName, kTrajectoryFormatVersion, kVersion, kGitHash) &&
+      writeScalar<std::uint64_t>(file, "creature_id", t.creature_id) &&
+      writeString(file, "source", t.source) && writeScalar(file, "fitness", t.fitness) &&
+      writeString(file, "status", t.status) && writeString(file, "task", t.task) &&
+      writeScalar(file, "time_step", t.time_step) &&
+      writeScalar<std::uint64_t>(file, "frame_stride", t.frame_stride) &&
+      writeScalar(file, "frame_rate", t.frame_rate) &&
+      writeString(file, "genome_text", t.genome_text);
   if (!ok)
     return false;
 
@@ -242,18 +90,19 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
                        {pose.rotation.x, pose.rotation.y, pose.rotation.z, pose.rotation.w});
   }
   what = "the frame datasets";
-  ok = writeDataset(file, "time", {frames}, H5T_NATIVE_DOUBLE, t.time.data(), "s",
-                    "simulated time of each frame") &&
-       writeDataset(file, "step", {frames}, H5T_NATIVE_UINT64, t.step.data(), "1",
-                    "physics steps taken before each frame (0: at birth)") &&
-       writeDataset(file, "phase", {frames}, H5T_NATIVE_UINT8, phases.data(), "1",
-                    "phase of each frame; index into the names attribute") &&
-       writeDataset(file, "center_of_mass", {frames, 3}, H5T_NATIVE_DOUBLE, com.data(), "m",
-                    "mass-weighted centre of the parts, world frame (z up)") &&
-       writeDataset(file, "position", {frames, parts, 3}, H5T_NATIVE_DOUBLE, position.data(), "m",
-                    "world position of each part's centre, frame x part x (x, y, z)") &&
-       writeDataset(file, "orientation", {frames, parts, 4}, H5T_NATIVE_DOUBLE, orientation.data(),
-                    "1", "world orientation of each part, unit quaternion (x, y, z, w)");
+  ok =
+      writeDescribed(file, "time", {frames}, H5T_NATIVE_DOUBLE, t.time.data(), "s",
+                     "simulated time of each frame") &&
+      writeDescribed(file, "step", {frames}, H5T_NATIVE_UINT64, t.step.data(), "1",
+                     "physics steps taken before each frame (0: at birth)") &&
+      writeDescribed(file, "phase", {frames}, H5T_NATIVE_UINT8, phases.data(), "1",
+                     "phase of each frame; index into the names attribute") &&
+      writeDescribed(file, "center_of_mass", {frames, 3}, H5T_NATIVE_DOUBLE, com.data(), "m",
+                     "mass-weighted centre of the parts, world frame (z up)") &&
+      writeDescribed(file, "position", {frames, parts, 3}, H5T_NATIVE_DOUBLE, position.data(), "m",
+                     "world position of each part's centre, frame x part x (x, y, z)") &&
+      writeDescribed(file, "orientation", {frames, parts, 4}, H5T_NATIVE_DOUBLE, orientation.data(),
+                     "1", "world orientation of each part, unit quaternion (x, y, z, w)");
   if (!ok)
     return false;
   {
@@ -272,10 +121,10 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
   for (const Vec3& h : t.half_extents)
     half.insert(half.end(), {h.x, h.y, h.z});
   std::vector<std::int32_t> parents(t.parent.begin(), t.parent.end());
-  return writeDataset(group.get(), "half_extents", {parts, 3}, H5T_NATIVE_DOUBLE, half.data(), "m",
-                      "half the box size along the part's own x, y, z axes") &&
-         writeDataset(group.get(), "parent", {parts}, H5T_NATIVE_INT32, parents.data(), "1",
-                      "index of the parent part; -1 for the root");
+  return writeDescribed(group.get(), "half_extents", {parts, 3}, H5T_NATIVE_DOUBLE, half.data(),
+                        "m", "half the box size along the part's own x, y, z axes") &&
+         writeDescribed(group.get(), "parent", {parts}, H5T_NATIVE_INT32, parents.data(), "1",
+                        "index of the parent part; -1 for the root");
 }
 
 }  // namespace
@@ -341,7 +190,7 @@ void writeTrajectory(const std::string& path, const Trajectory& t) {
     throw Error(ExitCode::output_file, path + ": " + what);
   };
   {
-    Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+    Handle file = createFile(temporary, H5F_LIBVER_EARLIEST);
     if (!file.valid())
       fail("cannot create the HDF5 file " + temporary);
     std::string what;

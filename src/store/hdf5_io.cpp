@@ -1,0 +1,207 @@
+#include "store/hdf5_io.hpp"
+
+#include <filesystem>
+#include <system_error>
+
+namespace cambrian::hdf5 {
+
+Handle& Handle::operator=(Handle&& other) noexcept {
+  // close the own identifier, then take the other one
+  if (this != &other) {
+    reset();
+    id_ = other.id_;
+    close_ = other.close_;
+    other.id_ = -1;
+  }
+  return *this;
+}
+
+herr_t Handle::reset() {
+  // close at most once
+  herr_t status = 0;
+  if (id_ >= 0 && close_)
+    status = close_(id_);
+  id_ = -1;
+  return status;
+}
+
+QuietErrors::QuietErrors() {
+  // keep the printer for the destructor
+  H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
+
+QuietErrors::~QuietErrors() {
+  H5Eset_auto2(H5E_DEFAULT, function_, data_);
+}
+
+Handle stringType() {
+  // variable length, UTF-8
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  return type;
+}
+
+Handle createFile(const std::string& path, H5F_libver_t oldest) {
+  // the file format bounds, then the file
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_libver_bounds(access.get(), oldest, H5F_LIBVER_LATEST);
+  return Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
+}
+
+Handle openFile(const std::string& path, const char* kind, bool swmr, std::string& problem) {
+  // missing, not HDF5, truncated or corrupt
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) {
+    problem = std::string("no such ") + kind + " file";
+    return Handle();
+  }
+  if (!std::filesystem::is_regular_file(path, error)) {
+    problem = "not a regular file";
+    return Handle();
+  }
+  htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
+  if (is_hdf5 == 0) {
+    problem = "not an HDF5 file (no HDF5 signature)";
+    return Handle();
+  }
+  if (is_hdf5 < 0) {
+    problem = "cannot read the HDF5 signature (unreadable or truncated file)";
+    return Handle();
+  }
+
+  // read-only, for SWMR reading first when asked (a file a writer may still be growing)
+  Handle file;
+  if (swmr)
+    file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT), H5Fclose);
+  if (!file.valid())
+    file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid())
+    problem = "HDF5 file cannot be opened (truncated or corrupt)";
+  return file;
+}
+
+bool writeString(hid_t location, const char* name, const std::string& value) {
+  // a scalar attribute holding one pointer to the text
+  Handle type = stringType();
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Aclose);
+  const char* text = value.c_str();
+  return attribute.valid() && H5Awrite(attribute.get(), type.get(), &text) >= 0;
+}
+
+bool writeStrings(hid_t location, const char* name, const std::vector<std::string>& values) {
+  // a 1-D attribute holding one pointer per text
+  Handle type = stringType();
+  hsize_t size = values.size();
+  Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose);
+  Handle attribute(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Aclose);
+  std::vector<const char*> texts;
+  for (const std::string& value : values)
+    texts.push_back(value.c_str());
+  return attribute.valid() && H5Awrite(attribute.get(), type.get(), texts.data()) >= 0;
+}
+
+bool describe(hid_t location, const char* units, const char* description) {
+  return writeString(location, "units", units) && writeString(location, "description", description);
+}
+
+bool writeFormat(hid_t file, const char* format, std::int32_t version,
+                 const std::string& cambrian_version, const std::string& git_hash) {
+  return writeString(file, "format", format) &&
+         writeScalar<std::int32_t>(file, "format_version", version) &&
+         writeString(file, "cambrian_version", cambrian_version) &&
+         writeString(file, "git_hash", git_hash);
+}
+
+bool readString(hid_t location, const char* name, std::string& value) {
+  // a scalar string attribute
+  if (H5Aexists(location, name) <= 0)
+    return false;
+  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
+  Handle type(H5Aget_type(attribute.get()), H5Tclose);
+  if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING)
+    return false;
+  Handle space(H5Aget_space(attribute.get()), H5Sclose);
+  if (H5Sget_simple_extent_npoints(space.get()) != 1)
+    return false;
+
+  // variable length: HDF5 allocates the text
+  if (H5Tis_variable_str(type.get()) > 0) {
+    Handle memory = stringType();
+    char* text = nullptr;
+    if (H5Aread(attribute.get(), memory.get(), &text) < 0 || !text)
+      return false;
+    value = text;
+    H5free_memory(text);
+    return true;
+  }
+
+  // fixed length: up to the first NUL
+  std::string buffer(H5Tget_size(type.get()), '\0');
+  if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0)
+    return false;
+  value = buffer.substr(0, buffer.find('\0'));
+  return true;
+}
+
+std::string checkFormat(hid_t file, const char* kind, const char* format, std::int32_t newest,
+                        std::int32_t& version) {
+  // the format name
+  std::string found;
+  if (!readString(file, "format", found))
+    return std::string("not a cambrian ") + kind +
+           " (HDF5 file without the root attribute 'format')";
+  if (found != format)
+    return std::string("not a cambrian ") + kind + " (root attribute 'format' is '" + found +
+           "', expected '" + format + "')";
+
+  // a version this cambrian reads
+  if (!readScalar(file, "format_version", version))
+    return "root attribute 'format_version' missing or not an integer";
+  if (version < 1 || version > newest)
+    return "format_version " + std::to_string(version) + " is not supported (this cambrian reads " +
+           std::to_string(newest) + ")";
+  return "";
+}
+
+Handle writeDataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, hid_t type,
+                    const void* values, hid_t properties) {
+  // the dataset, then its values unless it is empty
+  Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+  Handle dataset(
+      H5Dcreate2(location, name, type, space.get(), H5P_DEFAULT, properties, H5P_DEFAULT),
+      H5Dclose);
+  if (!dataset.valid())
+    return dataset;
+  hsize_t count = 1;
+  for (hsize_t d : dims)
+    count *= d;
+  if (count > 0 && H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0)
+    return Handle();
+  return dataset;
+}
+
+Handle openDataset(hid_t location, const char* name, int max_rank, std::vector<hsize_t>& dims) {
+  // present and openable
+  if (H5Lexists(location, name, H5P_DEFAULT) <= 0)
+    return Handle();
+  Handle dataset(H5Dopen2(location, name, H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid())
+    return dataset;
+
+  // a simple shape of rank 1 to max_rank
+  Handle space(H5Dget_space(dataset.get()), H5Sclose);
+  int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank < 1 || rank > max_rank)
+    return Handle();
+  dims.assign(static_cast<std::size_t>(rank), 0);
+  if (H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) != rank)
+    return Handle();
+  return dataset;
+}
+
+}  // namespace cambrian::hdf5
