@@ -33,6 +33,11 @@ struct PhysicsSettings {
   double strength_per_area = 2000;  ///< N m of torque per m^2 of the smaller cross-section
   Actuation actuation = Actuation::saturated_motor;  ///< how commands move the joints
   double motor_speed = 10;                           ///< rad / s, target speed of a saturated motor
+  /// Whether a creature's parts collide with each other while it moves (Sims) or only with the
+  /// ground (Walking with Dinosaurs; Chaumont et al. test self-overlap at birth only). Overlap at
+  /// birth is rejected either way. Off by default: a motor pressing one part into another lets
+  /// Bullet's contact correction pump energy into the body.
+  bool self_collision = false;
   int solver_iterations = 20;
   double max_speed = 50;          ///< m / s: any part faster has exploded
   double max_displacement = 100;  ///< m: any part farther from its start has exploded

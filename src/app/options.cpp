@@ -80,6 +80,10 @@ po::options_description creatureOptions(CreatureSettings& s) {
       "physics.motor_speed",
       po::value(&s.physics.motor_speed)->default_value(s.physics.motor_speed),
       "target speed of a saturated motor, rad/s")(
+      "physics.self_collision",
+      po::value(&s.physics.self_collision)->default_value(s.physics.self_collision),
+      "parts collide with each other while moving (Sims), not only with the ground; overlap at "
+      "birth is rejected either way")(
       "physics.solver_iterations",
       po::value(&s.physics.solver_iterations)->default_value(s.physics.solver_iterations),
       "constraint solver iterations per step")(

@@ -29,21 +29,28 @@ Quat fromBt(const btQuaternion& q) {
   return {q.w(), q.x(), q.y(), q.z()};
 }
 
-// a part's collider: collides with everything except its parent and children (the joint
-// neighbours), also across the virtual links of multi-degree-of-freedom joints
+// a part's collider: collides with the ground and, while `self_contacts` is set, with the
+// creature's other parts except its parent and children (the joint neighbours), also across
+// the virtual links of multi-degree-of-freedom joints
 class PartCollider : public btMultiBodyLinkCollider {
  public:
-  PartCollider(btMultiBody* body, int link, int part, int parent_part)
-      : btMultiBodyLinkCollider(body, link), part_(part), parent_part_(parent_part) {}
+  PartCollider(btMultiBody* body, int link, int part, int parent_part, const bool* self_contacts)
+      : btMultiBodyLinkCollider(body, link),
+        part_(part),
+        parent_part_(parent_part),
+        self_contacts_(self_contacts) {}
 
   bool checkCollideWithOverride(const btCollisionObject* other_object) const override {
     const auto* other = dynamic_cast<const PartCollider*>(other_object);
     if (!other || other->m_multiBody != m_multiBody)
       return true;
+    if (!*self_contacts_)
+      return false;
     return other->part_ != parent_part_ && other->parent_part_ != part_;
   }
 
   int part_, parent_part_;
+  const bool* self_contacts_;
 };
 
 // box inertia about its centre
@@ -70,6 +77,7 @@ struct BulletWorld {
   std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
   std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;  // one per effector (or null)
   std::unique_ptr<btMultiBody> body;
+  bool self_contacts = true;  // parts touch each other (always at the birth check)
 
   ~BulletWorld() {
     for (auto& motor : motors)
@@ -91,6 +99,24 @@ Simulation::Simulation(const BodyPlan& plan, const PhysicsSettings& settings, Ve
   build(birth_height);
   if (status_ == EvalStatus::ok)
     checkBirthPenetration();
+  if (!settings_.self_collision)
+    stopSelfContacts();
+}
+
+void Simulation::stopSelfContacts() {
+  BulletWorld& b = *bullet_;
+  b.self_contacts = false;
+
+  // drop the part-part pairs (and their contact manifolds) the birth check found
+  btOverlappingPairCache* pairs = b.world.getBroadphase()->getOverlappingPairCache();
+  btBroadphasePairArray& array = pairs->getOverlappingPairArray();
+  for (int i = array.size() - 1; i >= 0; --i) {
+    btBroadphasePair& pair = array[i];
+    const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+    const auto* c = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+    if (a->getUserIndex() >= 0 && c->getUserIndex() >= 0)
+      pairs->removeOverlappingPair(pair.m_pProxy0, pair.m_pProxy1, b.world.getDispatcher());
+  }
 }
 
 Simulation::~Simulation() = default;
@@ -202,7 +228,8 @@ void Simulation::build(double birth_height) {
   for (int i = 0; i < part_count; ++i) {
     const PartPlan& part = plan_.parts[i];
     b.shapes.push_back(std::make_unique<btBoxShape>(toBt(part.size * 0.5)));
-    auto collider = std::make_unique<PartCollider>(&body, part_link[i], i, part.parent);
+    auto collider =
+        std::make_unique<PartCollider>(&body, part_link[i], i, part.parent, &b.self_contacts);
     collider->setCollisionShape(b.shapes.back().get());
     collider->setFriction(1.0);
     collider->setRestitution(settings_.restitution);

@@ -26,7 +26,7 @@ class Simulation {
  public:
   /// Builds the world with the creature's lowest point `birth_height` m above the ground (0:
   /// resting on it). A body that overlaps itself at birth gets status() self_penetration; stepping
-  /// it does nothing.
+  /// it does nothing. Unless `settings.self_collision`, parts touch only the ground afterwards.
   Simulation(const BodyPlan& plan, const PhysicsSettings& settings, Vec3 target = {10, 0, 0},
              double birth_height = 0);
   ~Simulation();
@@ -59,6 +59,7 @@ class Simulation {
  private:
   void build(double birth_height);
   void checkBirthPenetration();
+  void stopSelfContacts();
   void readSensors();
   void applyTorques(bool brain_on, double substep);
   void monitor();

@@ -180,5 +180,22 @@ TEST(Evaluate, SaturatedMotorsDenyTheIntegratorExploit) {
   EXPECT_GT(with_torque.measure("distance"), 20.0);
 }
 
+// a three-part creature evolved with self-collision on: its motor presses one part into another
+// and Bullet's contact correction launches it (about 10 m/s, in the air); without self-contacts
+// (the default) it stays put
+TEST(Evaluate, NoSelfContactsDenyTheContactPump) {
+  Genome exploit = readGenomeFile(std::string(CAMBRIAN_SOURCE_DIR) +
+                                  "/tests/tasks/data/self_contact_exploit.genome");
+  TaskSettings task;  // the full 10 s walk it was evolved on
+  PhysicsSettings self_contacts;
+  self_contacts.self_collision = true;
+  Outcome with_contacts = evaluate(exploit, GenomeLimits{}, task, self_contacts);
+  Outcome without = evaluate(exploit, GenomeLimits{}, task, PhysicsSettings{});
+  ASSERT_EQ(without.status, EvalStatus::ok) << without.message;
+  EXPECT_LT(without.measure("distance"), 1.0);
+  // the fixture still is what it claims to be
+  EXPECT_GT(with_contacts.measure("distance"), 20.0);
+}
+
 }  // namespace
 }  // namespace cambrian
