@@ -308,6 +308,9 @@ std::string optionsMarkdown(const po::options_description& desc) {
       if (at != std::string::npos)
         default_text = parameter.substr(at + 2, parameter.size() - at - 3);
     }
+    bool is_flag = dynamic_cast<const po::typed_value<bool>*>(option->semantic().get()) != nullptr;
+    if (is_flag && (default_text == "0" || default_text == "1"))
+      default_text = default_text == "1" ? "true" : "false";
     out << "| `" << key << "` | " << tableCell(readableDefault(default_text)) << " | "
         << tableCell(option->description()) << " |\n";
   }

@@ -22,6 +22,7 @@ TEST(OptionsMarkdown, OneTablePerSection) {
   EXPECT_NE(text.find("| `genome.min_part_size` | 0.05 | smallest box side, m |"),
             std::string::npos);
   EXPECT_NE(text.find("| `physics.substeps` | 2 |"), std::string::npos);
+  EXPECT_NE(text.find("| `physics.self_collision` | false |"), std::string::npos);
 }
 
 // a pipe inside a description does not split the table cell
