@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
+#include <list>
 #include <sys/resource.h>
 
 namespace cambrian {
@@ -55,7 +56,16 @@ Message waitFor(Try tryOnce) {
 
 }  // namespace
 
-MpiContext::MpiContext(int* argc, char*** argv) {
+// sends under way: each request beside the bytes it reads from (a list, so they never move)
+struct MpiContext::PostedSends {
+  struct Send {
+    MPI_Request request = MPI_REQUEST_NULL;
+    std::vector<std::uint8_t> bytes;
+  };
+  std::list<Send> sends;
+};
+
+MpiContext::MpiContext(int* argc, char*** argv) : posted_(std::make_unique<PostedSends>()) {
   // initialise unless someone already did
   int initialised = 0;
   MPI_Initialized(&initialised);
@@ -71,6 +81,11 @@ MpiContext::MpiContext(int* argc, char*** argv) {
 }
 
 MpiContext::~MpiContext() {
+  // sends still under way are abandoned: MPI_Finalize or MPI_Abort follows
+  for (auto& send : posted_->sends) {
+    if (send.request != MPI_REQUEST_NULL)
+      MPI_Request_free(&send.request);
+  }
   int finalised = 0;
   MPI_Finalized(&finalised);
   if (owns_ && !finalised)
@@ -81,6 +96,30 @@ void MpiContext::send(int destination, Tag tag, const std::vector<std::uint8_t>&
   check(MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, destination,
                  static_cast<int>(tag), MPI_COMM_WORLD),
         "MPI_Send", rank_);
+}
+
+void MpiContext::post(int destination, Tag tag, std::vector<std::uint8_t> bytes) {
+  auto& send = posted_->sends.emplace_back();
+  send.bytes = std::move(bytes);
+  check(MPI_Isend(send.bytes.data(), static_cast<int>(send.bytes.size()), MPI_BYTE, destination,
+                  static_cast<int>(tag), MPI_COMM_WORLD, &send.request),
+        "MPI_Isend", rank_);
+}
+
+std::size_t MpiContext::completePosted() {
+  // test each send; drop the finished ones with their bytes
+  for (auto it = posted_->sends.begin(); it != posted_->sends.end();) {
+    int done = 0;
+    check(MPI_Test(&it->request, &done, MPI_STATUS_IGNORE), "MPI_Test", rank_);
+    it = done ? posted_->sends.erase(it) : std::next(it);
+  }
+  return posted_->sends.size();
+}
+
+void MpiContext::waitPosted() {
+  Backoff backoff;
+  while (completePosted() > 0)
+    backoff.wait();
 }
 
 bool MpiContext::tryReceiveAny(int source, Message& out) {

@@ -5,6 +5,7 @@
 #include "cambrian/error.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,13 @@ class MpiContext {
 
   /// Sends `bytes` to `destination` with `tag` (standard-mode send).
   void send(int destination, Tag tag, const std::vector<std::uint8_t>& bytes);
+  /// Starts sending `bytes` to `destination` and returns at once (MPI_Isend); the bytes are
+  /// kept until the send completes, so a message to a busy rank never blocks or spins the sender.
+  void post(int destination, Tag tag, std::vector<std::uint8_t> bytes);
+  /// Frees the posted sends that have completed; returns how many are still under way.
+  std::size_t completePosted();
+  /// Waits (test + adaptive sleep) until every posted send has completed.
+  void waitPosted();
   /// Receives a waiting message with `tag` from any rank into `out`; false when none is waiting.
   bool tryReceive(Tag tag, Message& out);
   /// Receives a waiting message of any tag from `source` (any rank when -1); false when none.
@@ -59,9 +67,11 @@ class MpiContext {
   [[noreturn]] void abort(ExitCode code, const std::string& message) const;
 
  private:
+  struct PostedSends;
   int rank_ = 0;
   int size_ = 1;
   bool owns_ = false;
+  std::unique_ptr<PostedSends> posted_;
 };
 
 /// Sleeps for an adaptively growing interval: call wait() while nothing has arrived and reset()

@@ -86,7 +86,8 @@ EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_
   return span;
 }
 
-MpiScheduler::MpiScheduler(MpiContext& mpi) : mpi_(mpi) {
+MpiScheduler::MpiScheduler(MpiContext& mpi, int in_flight)
+    : mpi_(mpi), in_flight_(std::max(1, in_flight)) {
   if (mpi.size() < 2)
     throw Error(ExitCode::mpi, "MpiScheduler needs at least 2 ranks");
 }
@@ -102,22 +103,26 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
   std::vector<char> outstanding_for(population.individuals.size(), 0);
   auto start = Clock::now();
 
-  // one creature to each idle worker
+  // creatures to every worker
   std::size_t next = 0, outstanding = 0;
   auto hand = [&](int worker) {
     std::size_t index = order[next++];
-    mpi_.send(worker, Tag::request,
+    mpi_.post(worker, Tag::request,
               encodeRequest(makeRequest(population.individuals[index], run_seed)));
     outstanding_for[index] = 1;
     ++outstanding;
   };
-  for (int worker = 1; worker < mpi_.size() && next < order.size(); ++worker)
-    hand(worker);
+  // `in_flight` rounds, so each worker has its next creature queued behind the current one
+  for (int round = 0; round < in_flight_; ++round) {
+    for (int worker = 1; worker < mpi_.size() && next < order.size(); ++worker)
+      hand(worker);
+  }
 
   // every result is answered with the next creature; wait by probe + sleep
   Message message;
   Backoff backoff;
   while (outstanding > 0) {
+    mpi_.completePosted();
     if (!mpi_.tryReceive(Tag::result, message)) {
       backoff.wait();
       continue;
@@ -154,6 +159,8 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     if (next < order.size())
       hand(message.source);
   }
+  // every result is in, so every request was received
+  mpi_.waitPosted();
   span.span_seconds = since(start);
   return span;
 }

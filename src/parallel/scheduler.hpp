@@ -50,13 +50,16 @@ class InProcessEvaluator : public PopulationEvaluator {
   WorkerSettings settings_;
 };
 
-/// Rank 0's self-scheduler: each idle worker gets one creature (longest expected first), each
-/// result is answered with the next creature. Waits by probe + adaptive sleep, never spinning.
-/// Throws Error(mpi) when a worker sends a malformed or unexpected result.
+/// Rank 0's self-scheduler: each worker gets `in_flight` creatures (longest expected first) and
+/// each result is answered with the next creature, so a worker always has its next creature
+/// queued and never waits for rank 0 to wake up and answer. Waits by probe + adaptive sleep,
+/// never spinning. Throws Error(mpi) when a worker sends a malformed or unexpected result.
 class MpiScheduler : public PopulationEvaluator {
  public:
-  /// `mpi` must have at least two ranks and outlive the scheduler.
-  explicit MpiScheduler(MpiContext& mpi);
+  /// Creatures each worker holds at once: the one it evaluates and the next, queued.
+  static constexpr int kDefaultInFlight = 2;
+  /// `mpi` must have at least two ranks and outlive the scheduler; `in_flight` >= 1.
+  explicit MpiScheduler(MpiContext& mpi, int in_flight = kDefaultInFlight);
   EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) override;
   int workers() const override;
   /// Sends the stop message to every worker (once; later calls do nothing).
@@ -64,6 +67,7 @@ class MpiScheduler : public PopulationEvaluator {
 
  private:
   MpiContext& mpi_;
+  int in_flight_;
   bool stopped_ = false;
 };
 
