@@ -123,15 +123,16 @@ def plot(results, output, dpi):
 
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
     # best distance per generation
-    for r in results:
-        left.plot(r["generation"] + 1, r["best"], marker=".", label=r["label"])
+    colours = [f"C{i % 10}" for i in range(len(results))]
+    for r, colour in zip(results, colours):
+        left.plot(r["generation"] + 1, r["best"], marker=".", color=colour, label=r["label"])
     left.set_xlabel("generation")
     left.set_ylabel("best distance in 10 s (m)")
     left.set_title("best walker per generation")
     left.grid(alpha=0.3)
     left.legend()
-    # centre-of-mass progress of the first and last bests over the measured phase
-    for r in results:
+    # centre-of-mass progress of the first and last bests over the measured phase, one colour a run
+    for r, colour in zip(results, colours):
         for which, style in (("first", ":"), ("last", "-")):
             entry = r[which]
             if entry["progress"] is None:
@@ -140,7 +141,9 @@ def plot(results, output, dpi):
             time = entry["com_time"][measured]
             com = entry["com"][measured][:, :2]
             travelled = np.linalg.norm(com - com[0], axis=1)
-            right.plot(time - time[0], travelled, style, label=f"{r['label']} gen {which}")
+            right.plot(
+                time - time[0], travelled, style, color=colour, label=f"{r['label']} {which} gen"
+            )
     right.set_xlabel("measured time (s)")
     right.set_ylabel("distance from the start of the measure (m)")
     right.set_title("first (dotted) and last (solid) best")
