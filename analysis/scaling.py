@@ -8,7 +8,9 @@ runs with the same worker count are repeats of one point.
 
 Per run: the median generation wall time over generations >= --skip (default 1: generation 0
 evaluates every creature, later ones skip the elites, and it pays the start-up), and rank 0's
-measured serial share sum(rank0_serial_seconds) / sum(wall_seconds) over the same generations.
+measured serial share sum(rank0_serial_seconds) / sum(wall_seconds) over the same generations, and
+the CPU share sum(rank0_cpu_seconds) / sum(wall_seconds): how busy rank 0 really was (a rank 0 that
+busy-polled would show 100 %).
 Per point: the median over repeats (min and max for the spread), then
 
 - strong (fixed population): speedup S(p) = T(1) / T(p), efficiency E = S / p, the Amdahl
@@ -46,7 +48,7 @@ import cambrian_history as ch  # noqa: E402
 PROGRAM = "scaling"
 COLUMNS = ["workers", "repeats", "population", "generations", "time_median", "time_min", "time_max",
            "speedup", "speedup_min", "speedup_max", "efficiency", "serial_fraction", "rank0_share",
-           "evals_per_s_per_worker"]
+           "rank0_cpu_share", "evals_per_s_per_worker"]
 
 
 def parse_arguments(argv):
@@ -102,6 +104,9 @@ def read_run(path, skip):
         "time": float(np.median(wall)),
         "times": wall,
         "rank0_share": float(np.sum(g["rank0_serial_seconds"][skip:]) / np.sum(wall)) if np.sum(wall) > 0 else 0.0,
+        # CPU rank 0 used over the same wall time (NaN for histories written before the column)
+        "rank0_cpu_share": (float(np.sum(g["rank0_cpu_seconds"][skip:]) / np.sum(wall))
+                            if "rank0_cpu_seconds" in g and np.sum(wall) > 0 else float("nan")),
         "evaluations": float(np.mean(g["evaluations"][skip:])),
         "rank0_serial": float(np.median(g["rank0_serial_seconds"][skip:])),
     }
@@ -179,6 +184,7 @@ def points(runs, mode="strong"):
             "time_min": float(times.min()),
             "time_max": float(times.max()),
             "rank0_share": float(np.median([r["rank0_share"] for r in group])),
+            "rank0_cpu_share": float(np.median([r.get("rank0_cpu_share", float("nan")) for r in group])),
             "evals_per_s_per_worker": float(np.median([r["evaluations"] / r["time"] / workers for r in group])),
         })
     base = rows[0]
@@ -228,13 +234,15 @@ def format_markdown(rows, fitted, mode, skip):
     """A Markdown table of the points and the fit."""
     serial = "Karp–Flatt e" if mode == "strong" else "(p − S)/(p − 1)"
     lines = [f"| workers | repeats | population | generation time median (s) | min..max (s) | speedup | "
-             f"efficiency | {serial} | rank 0 serial share |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+             f"efficiency | {serial} | rank 0 serial share | rank 0 CPU share |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in rows:
         kf = "–" if np.isnan(r["serial_fraction"]) else f"{r['serial_fraction']:.4f}"
+        cpu = r.get("rank0_cpu_share", float("nan"))
+        cpu = "–" if np.isnan(cpu) else f"{100 * cpu:.3f} %"
         lines.append(f"| {r['workers']} | {r['repeats']} | {r['population']} | {r['time_median']:.4f} | "
                      f"{r['time_min']:.4f}..{r['time_max']:.4f} | {r['speedup']:.3f} | {100 * r['efficiency']:.1f} % | "
-                     f"{kf} | {100 * r['rank0_share']:.3f} % |")
+                     f"{kf} | {100 * r['rank0_share']:.3f} % | {cpu} |")
     law = "Amdahl" if mode == "strong" else "Gustafson"
     lines.append("")
     lines.append(f"{law} fit: serial fraction s = {fitted:.5f} (generations >= {skip}; medians over repeats).")

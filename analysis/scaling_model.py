@@ -5,9 +5,15 @@ machines we can measure on.
 The model (docs/scaling.md):
 - rank 0 holds E evaluations of cost c_1 >= c_2 >= ... (largest first, as MpiScheduler sends
   them) and W workers; it hands out one evaluation at a time, and each hand-out occupies rank 0
-  for the message latency L (so hand-outs are serial on rank 0);
-- first every worker gets one evaluation; then each worker that finishes asks for the next one
-  and rank 0 serves the requests in the order they arrive (self-scheduling);
+  for a time L (so hand-outs are serial on rank 0);
+- first every worker gets K evaluations (--in-flight, 2 as MpiScheduler: the one it evaluates
+  and the next, queued); then each result is answered with the next evaluation for that worker,
+  in the order the results arrive (self-scheduling). A worker starts its queued evaluation as
+  soon as it finishes one, so with K = 2 the hand-out time is hidden while L < c. In the tail of
+  the generation (fewer than 4 evaluations per worker left to hand out) a worker holds one, as
+  MpiScheduler does, so none waits behind a long evaluation while others idle;
+- each evaluation occupies its worker for c + o, o a per-evaluation overhead outside the
+  measured eval_seconds (receiving and decoding the request, sending the result);
 - the generation ends when the last evaluation is done (the barrier), and rank 0 then spends
   its serial time S0 (breeding, statistics, records) before the next one:
       T(W) = S0 + span(W);   speedup S(W) = T(1) / T(W);   efficiency S(W) / W.
@@ -16,9 +22,12 @@ Calibration, from a history (--history) or from parameters:
 - per-evaluation costs: the empirical distribution of eval_seconds (evaluated rows only),
   resampled with replacement, or lognormal with --cost-mean and --cost-cv;
 - S0: median rank0_serial_seconds over generations >= 1;
-- L: the measured evaluation span of each generation minus the span this model gives with
-  L = 0 for that generation's own costs, divided by the hand-outs per worker (E / W); median
-  over generations. It lumps together the message latency and rank 0's wake-up delay;
+- L: rank 0's CPU time per hand-out, (rank0_cpu_seconds - rank0_serial_seconds) / evaluations,
+  median over generations (0 for a one-rank run, and for histories without rank0_cpu_seconds);
+- o: the measured evaluation span of each generation minus the span this model gives with o = 0
+  for that generation's own costs, divided by the evaluations per worker (E / W); median over
+  generations. It holds whatever keeps a worker from evaluating that queuing does not hide
+  (message and decoding time, waiting for a core on a shared machine);
 - the share of the population evaluated per generation (elites are not): evaluations / count.
 
 Projects speedup and efficiency for populations --populations (default 100 300 1000) and worker
@@ -37,6 +46,7 @@ Exit codes: 0 ok, 2 usage, 4 bad input file.
 
 import argparse
 import heapq
+from collections import deque
 import os
 import sys
 
@@ -55,6 +65,8 @@ PROGRAM = "scaling_model"
 LIMITS = ("work", "dispatch", "barrier", "serial")
 BARRIER_SLACK = 1.25  # zero-latency span / (total cost / W) above which the barrier is the bound
 MARKERS = {"work": "o", "dispatch": "s", "barrier": "^", "serial": "D"}
+IN_FLIGHT = 2  # evaluations MpiScheduler keeps at each worker (src/parallel/scheduler.hpp)
+QUEUE_WHILE_REMAINING = 4  # ... while at least this many per worker remain to be handed out
 
 
 def parse_arguments(argv):
@@ -75,6 +87,10 @@ def parse_arguments(argv):
     parser.add_argument("--cost-cv", type=float, default=0.0, help="coefficient of variation of the lognormal cost (default 0)")
     parser.add_argument("--serial", type=float, default=None, help="rank 0 serial seconds per generation")
     parser.add_argument("--latency", type=float, default=None, help="seconds of rank 0 per hand-out")
+    parser.add_argument("--overhead", type=float, default=None,
+                        help="seconds of worker time per evaluation outside eval_seconds")
+    parser.add_argument("--in-flight", type=int, default=IN_FLIGHT,
+                        help=f"evaluations each worker holds at once (default {IN_FLIGHT}, as MpiScheduler)")
     parser.add_argument("--evaluated-share", type=float, default=None,
                         help="share of the population evaluated per generation (default: from the history, else 0.8)")
     parser.add_argument("--populations", type=int, nargs="+", default=[100, 300, 1000], help="populations to project (default 100 300 1000)")
@@ -88,49 +104,74 @@ def parse_arguments(argv):
     arguments = parser.parse_args(argv)
     if arguments.history is None and not arguments.sweep and arguments.cost_mean is None:
         parser.error("give --history, --sweep or --cost-mean")
-    for name in ("cost_mean", "serial", "latency"):
+    for name in ("cost_mean", "serial", "latency", "overhead"):
         value = getattr(arguments, name)
         if value is not None and value < 0:
             parser.error(f"--{name.replace('_', '-')} must be >= 0")
-    if arguments.max_workers < 1 or arguments.samples < 1 or arguments.cost_cv < 0:
-        parser.error("--max-workers and --samples must be >= 1, --cost-cv >= 0")
+    if arguments.max_workers < 1 or arguments.samples < 1 or arguments.cost_cv < 0 or arguments.in_flight < 1:
+        parser.error("--max-workers, --samples and --in-flight must be >= 1, --cost-cv >= 0")
     return arguments
 
 
-def simulate_span(costs, workers, latency):
+def simulate_span(costs, workers, latency, in_flight=IN_FLIGHT, overhead=0.0):
     """Evaluation span of one generation: costs handed out largest first, one at a time, each
-    hand-out taking `latency` of rank 0; a finished worker gets the next evaluation."""
+    hand-out taking `latency` of rank 0; every worker first gets `in_flight` evaluations, then
+    each result is answered with the next, and in the tail (fewer than QUEUE_WHILE_REMAINING
+    evaluations per worker left) a worker holds only one; an evaluation occupies its worker for
+    cost + overhead."""
     order = np.sort(np.asarray(costs, dtype=float))[::-1]
     if len(order) == 0:
         return 0.0
     rank0_free = 0.0
+    queues = [deque() for _ in range(workers)]  # (arrival time, cost) handed to each worker
+    held = [0] * workers  # evaluations at each worker, running or queued
+    handed = 0
+
+    def depth():
+        return in_flight if len(order) - handed >= QUEUE_WHILE_REMAINING * workers else 1
+
+    def hand(worker, ready):
+        nonlocal rank0_free, handed
+        rank0_free = max(rank0_free, ready) + latency
+        queues[worker].append((rank0_free, order[handed]))
+        handed += 1
+        held[worker] += 1
+
+    # round by round: every worker has its first evaluation before any gets a second
+    for round_ in range(1, in_flight + 1):
+        for worker in range(workers):
+            if handed < len(order) and held[worker] < min(round_, depth()):
+                hand(worker, 0.0)
+    # each worker starts its first; every finish is answered, in finishing order
     finishes = []
-    # the first round: one evaluation per worker
-    first = min(workers, len(order))
-    for k in range(first):
-        rank0_free += latency
-        heapq.heappush(finishes, rank0_free + order[k])
-    # every finish asks for the next evaluation, served in arrival order
+    for worker in range(workers):
+        if queues[worker]:
+            arrival, cost = queues[worker].popleft()
+            heapq.heappush(finishes, (arrival + cost + overhead, worker))
     span = 0.0
-    for k in range(first, len(order)):
-        done = heapq.heappop(finishes)
+    while finishes:
+        done, worker = heapq.heappop(finishes)
         span = max(span, done)
-        rank0_free = max(rank0_free, done) + latency
-        heapq.heappush(finishes, rank0_free + order[k])
-    return max(span, max(finishes))
+        held[worker] -= 1
+        while handed < len(order) and held[worker] < depth():
+            hand(worker, done)
+        if queues[worker]:
+            arrival, cost = queues[worker].popleft()
+            heapq.heappush(finishes, (max(done, arrival) + cost + overhead, worker))
+    return span
 
 
-def generation_time(costs, workers, latency, serial):
+def generation_time(costs, workers, latency, serial, in_flight=IN_FLIGHT, overhead=0.0):
     """T(W) = rank 0 serial time + evaluation span."""
-    return serial + simulate_span(costs, workers, latency)
+    return serial + simulate_span(costs, workers, latency, in_flight, overhead)
 
 
-def limit_of(costs, workers, latency, serial):
+def limit_of(costs, workers, latency, serial, overhead=0.0):
     """What bounds the generation: the largest of total cost / W (`work`), E·L (`dispatch`),
     S0 (`serial`) and `barrier`: the span with instant hand-outs, counted only when it is more
     than BARRIER_SLACK above total cost / W (whole evaluations per worker, the slowest creature)."""
-    work = float(np.sum(costs)) / workers
-    span = simulate_span(costs, workers, 0.0)
+    work = (float(np.sum(costs)) + overhead * len(costs)) / workers
+    span = simulate_span(costs, workers, 0.0, overhead=overhead)
     bounds = {"work": work, "dispatch": len(costs) * latency, "serial": serial,
               "barrier": span if span > BARRIER_SLACK * work else 0.0}
     return max(LIMITS, key=lambda k: bounds[k])
@@ -140,10 +181,19 @@ class Calibration:
     """Per-evaluation costs (a sampler), serial seconds, latency and evaluated share."""
 
     def __init__(self, costs=None, cost_mean=None, cost_cv=0.0, serial=0.0, latency=0.0, evaluated_share=0.8,
-                 source="parameters"):
+                 source="parameters", overhead=0.0, in_flight=IN_FLIGHT):
         self.costs = None if costs is None else np.asarray(costs, dtype=float)
         self.cost_mean, self.cost_cv = cost_mean, cost_cv
         self.serial, self.latency, self.evaluated_share, self.source = serial, latency, evaluated_share, source
+        self.overhead, self.in_flight = overhead, in_flight
+
+    def time(self, costs, workers):
+        """Modelled generation time of `costs` on `workers`."""
+        return generation_time(costs, workers, self.latency, self.serial, self.in_flight, self.overhead)
+
+    def limit(self, costs, workers):
+        """What bounds that generation (see limit_of)."""
+        return limit_of(costs, workers, self.latency, self.serial, self.overhead)
 
     def draw(self, count, rng):
         """`count` evaluation costs: resampled from the history, or lognormal (or constant)."""
@@ -157,7 +207,8 @@ class Calibration:
     def describe(self):
         mean = self.cost_mean if self.cost_mean is not None else float(np.mean(self.costs))
         return (f"calibration ({self.source}): mean cost {mean:.6g} s, rank 0 serial {self.serial:.6g} s, "
-                f"latency {self.latency:.6g} s per hand-out, evaluated share {self.evaluated_share:.3f}")
+                f"latency {self.latency:.6g} s per hand-out, overhead {self.overhead:.6g} s per evaluation, "
+                f"{self.in_flight} in flight, evaluated share {self.evaluated_share:.3f}")
 
 
 def calibrate(path, skip=1):
@@ -165,6 +216,7 @@ def calibrate(path, skip=1):
     with ch.History(path) as history:
         t = history.individuals()
         g = history.generations()
+        attributes = history.attributes
     evaluated = t["worker_rank"] >= 0
     costs = t["eval_seconds"][evaluated]
     if len(costs) == 0 or len(g["generation"]) == 0:
@@ -172,7 +224,13 @@ def calibrate(path, skip=1):
     later = g["generation"] >= skip if np.any(g["generation"] >= skip) else np.ones(len(g["generation"]), bool)
     serial = float(np.median(g["rank0_serial_seconds"][later]))
     share = float(np.median(g["evaluations"][later] / g["count"][later]))
-    # latency: measured span beyond the zero-latency model span, per hand-out per worker
+    # latency: rank 0's CPU time per hand-out, beyond its serial work (no messages in one rank)
+    latency = 0.0
+    if "rank0_cpu_seconds" in g and int(attributes.get("rank_count", 1)) > 1:
+        busy = g["rank0_cpu_seconds"][later] - g["rank0_serial_seconds"][later]
+        per = np.maximum(0.0, busy) / np.maximum(1.0, g["evaluations"][later])
+        latency = float(np.median(per)) if len(per) else 0.0
+    # overhead: measured span beyond the model's span without it, per evaluation per worker
     estimates = []
     for i, generation in enumerate(g["generation"]):
         if not later[i]:
@@ -182,10 +240,12 @@ def calibrate(path, skip=1):
         count = int(mine.sum())
         if count == 0 or workers < 1:
             continue
-        excess = float(g["evaluation_span_seconds"][i]) - simulate_span(t["eval_seconds"][mine], workers, 0.0)
+        modelled = simulate_span(t["eval_seconds"][mine], workers, latency, IN_FLIGHT, 0.0)
+        excess = float(g["evaluation_span_seconds"][i]) - modelled
         estimates.append(max(0.0, excess) / max(1.0, count / workers))
-    latency = float(np.median(estimates)) if estimates else 0.0
-    return Calibration(costs=costs, serial=serial, latency=latency, evaluated_share=share, source=path)
+    overhead = float(np.median(estimates)) if estimates else 0.0
+    return Calibration(costs=costs, serial=serial, latency=latency, evaluated_share=share, source=path,
+                       overhead=overhead)
 
 
 def project(calibration, populations, worker_counts, samples=5, seed=1):
@@ -195,10 +255,10 @@ def project(calibration, populations, worker_counts, samples=5, seed=1):
         rng = np.random.default_rng([seed, population])
         count = max(1, int(round(population * calibration.evaluated_share)))
         draws = [calibration.draw(count, rng) for _ in range(samples)]
-        base = np.mean([generation_time(c, 1, calibration.latency, calibration.serial) for c in draws])
+        base = np.mean([calibration.time(c, 1) for c in draws])
         for workers in worker_counts:
-            time = np.mean([generation_time(c, workers, calibration.latency, calibration.serial) for c in draws])
-            limits = [limit_of(c, workers, calibration.latency, calibration.serial) for c in draws]
+            time = np.mean([calibration.time(c, workers) for c in draws])
+            limits = [calibration.limit(c, workers) for c in draws]
             speedup = base / time
             rows.append({"population": population, "workers": workers, "evaluations": count,
                          "time": float(time), "speedup": float(speedup), "efficiency": float(speedup / workers),
@@ -218,7 +278,7 @@ def compare(calibration, runs, samples=5, seed=1, mode="strong"):
     for row in rows:
         count = max(1, int(round(np.median(evaluations[row["workers"]]))))
         draws = [calibration.draw(count, rng) for _ in range(samples)]
-        model = float(np.mean([generation_time(c, row["workers"], calibration.latency, calibration.serial) for c in draws]))
+        model = float(np.mean([calibration.time(c, row["workers"]) for c in draws]))
         out.append({"workers": row["workers"], "measured": row["time_median"], "model": model,
                     "measured_speedup": row["speedup"]})
     for o in out:
@@ -284,9 +344,10 @@ def main(argv=None):
     # parameters override what the history says
     if arguments.cost_mean is not None:
         calibration.cost_mean, calibration.cost_cv = arguments.cost_mean, arguments.cost_cv
-    for name in ("serial", "latency", "evaluated_share"):
+    for name in ("serial", "latency", "overhead", "evaluated_share"):
         if getattr(arguments, name) is not None:
             setattr(calibration, name, getattr(arguments, name))
+    calibration.in_flight = arguments.in_flight
     print(f"# {calibration.describe()}")
     # projection
     worker_counts = [2 ** k for k in range(int(np.log2(arguments.max_workers)) + 1)]

@@ -79,6 +79,8 @@ def test_fixture_sweep(sweep_dir):
     assert base == 1 and rows[0]["speedup"] == 1.0 and 0.0 <= fitted <= 1.0
     for r in rows:
         assert r["time_median"] > 0 and 0.0 <= r["rank0_share"] < 1.0 and r["population"] > 0
+        # rank 0 waits asleep while the workers evaluate: CPU well under its wall time
+        assert 0.0 < r["rank0_cpu_share"] < 0.5
         assert r["generations"] == r["repeats"] * (runs[0]["generations"])
 
 

@@ -28,9 +28,31 @@ def test_latency_alone_is_the_dispatch_bound():
 
 # largest first: the long evaluation goes first and the rest fill the other worker
 def test_largest_first_schedule():
-    assert sm.simulate_span([1, 3, 1, 1], 2, 0.0) == 3.0
+    assert sm.simulate_span([1, 3, 1, 1], 2, 0.0, in_flight=1) == 3.0
     assert sm.simulate_span([2, 2, 2, 2, 2], 2, 0.0) == 6.0  # 3 on one worker, 2 on the other
+    # in the tail nothing is queued, so no creature waits behind the long one
+    assert sm.simulate_span([1, 3, 1, 1], 2, 0.0, in_flight=2) == 3.0
     assert sm.simulate_span([], 4, 0.1) == 0.0
+
+
+# a queued evaluation hides the hand-out: one in flight pays L per evaluation; two pay it for
+# the first and for the last three, handed one at a time in the tail (< 4 per worker left)
+def test_queued_evaluation_hides_the_hand_out():
+    costs = np.ones(10)
+    assert sm.simulate_span(costs, 1, 0.1, in_flight=1) == pytest.approx(11.0)
+    assert sm.simulate_span(costs, 1, 0.1, in_flight=2) == pytest.approx(10.4)
+    # unless the hand-out takes longer than the evaluation: then rank 0 is the bound again
+    assert sm.simulate_span(np.full(10, 0.05), 1, 0.1, in_flight=2) >= 10 * 0.1 + 0.05
+    # two workers: 8 evaluations each, L hidden until the tail
+    assert sm.simulate_span(np.ones(16), 2, 0.1, in_flight=1) == pytest.approx(8.9)
+    assert sm.simulate_span(np.ones(16), 2, 0.1, in_flight=2) == pytest.approx(8.6)
+
+
+# the per-evaluation overhead is paid by the worker, in parallel, and never hidden
+def test_overhead_is_paid_per_evaluation_by_the_worker():
+    assert sm.simulate_span(np.ones(10), 1, 0.0, overhead=0.5) == pytest.approx(15.0)
+    assert sm.simulate_span(np.ones(10), 2, 0.0, overhead=0.5) == pytest.approx(7.5)
+    assert sm.limit_of(np.ones(10), 2, 0.0, 0.0, overhead=0.5) == "work"
 
 
 # more workers than evaluations: the slowest creature bounds the generation
@@ -58,6 +80,7 @@ def test_projection_with_overhead_is_sub_linear():
 def test_calibration_from_history(run_history):
     calibration = sm.calibrate(run_history)
     assert len(calibration.costs) > 0 and np.all(calibration.costs >= 0)
+    assert calibration.latency >= 0 and calibration.overhead >= 0 and calibration.in_flight == sm.IN_FLIGHT
     assert calibration.serial >= 0 and calibration.latency >= 0
     assert 0 < calibration.evaluated_share <= 1
     draws = calibration.draw(100, np.random.default_rng(1))

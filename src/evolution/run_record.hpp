@@ -37,6 +37,7 @@ struct GenerationRecord {
   std::size_t evaluations = 0;         ///< individuals evaluated (elites are not)
   int workers = 0;                     ///< evaluating ranks
   double rank0_serial_seconds = 0;     ///< rank 0 busy outside the evaluation span (breeding...)
+  double rank0_cpu_seconds = 0;        ///< CPU time rank 0 used in the whole generation
   double evaluation_span_seconds = 0;  ///< first request sent to last result received
   double worker_busy_seconds = 0;      ///< sum of evaluation wall times
   double worker_idle_seconds = 0;      ///< workers * span - busy

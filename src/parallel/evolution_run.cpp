@@ -92,6 +92,7 @@ GenerationRecord generationRecordOf(const HistoryGeneration& row) {
   record.evaluations = row.evaluations;
   record.workers = row.workers;
   record.rank0_serial_seconds = row.rank0_serial_seconds;
+  record.rank0_cpu_seconds = row.rank0_cpu_seconds;
   record.evaluation_span_seconds = row.evaluation_span_seconds;
   record.worker_busy_seconds = row.worker_busy_seconds;
   record.worker_idle_seconds = row.worker_idle_seconds;
@@ -248,6 +249,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
       break;
     }
     auto generation_start = Clock::now();
+    double generation_cpu_start = processCpuSeconds();
 
     // breed (generation 0: the initial population), then evaluate what is new
     Population population = last ? breeder.nextGeneration(*last) : breeder.initialPopulation(seeds);
@@ -266,6 +268,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     digest.add(population);
     appendRecords(population, result.individuals);
     record.wall_seconds = secondsSince(generation_start);
+    record.rank0_cpu_seconds = processCpuSeconds() - generation_cpu_start;
     record.rank0_serial_seconds = std::max(0.0, record.wall_seconds - span.span_seconds);
     result.generations.push_back(record);
     walls.push_back(record.wall_seconds);

@@ -105,17 +105,33 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
 
   // creatures to every worker
   std::size_t next = 0, outstanding = 0;
+  std::vector<int> held(static_cast<std::size_t>(mpi_.size()), 0);  // creatures at each worker
   auto hand = [&](int worker) {
     std::size_t index = order[next++];
     mpi_.post(worker, Tag::request,
               encodeRequest(makeRequest(population.individuals[index], run_seed)));
     outstanding_for[index] = 1;
     ++outstanding;
+    ++held[static_cast<std::size_t>(worker)];
   };
-  // `in_flight` rounds, so each worker has its next creature queued behind the current one
-  for (int round = 0; round < in_flight_; ++round) {
-    for (int worker = 1; worker < mpi_.size() && next < order.size(); ++worker)
+  // a worker holds `in_flight` creatures while plenty remain, one in the tail of the generation,
+  // where a creature queued behind a long one would wait while other workers are idle
+  auto depth = [&] {
+    std::size_t remaining = order.size() - next;
+    return remaining >= kQueueWhileRemainingPerWorker * static_cast<std::size_t>(workers())
+               ? in_flight_
+               : 1;
+  };
+  auto fill = [&](int worker) {
+    while (next < order.size() && held[static_cast<std::size_t>(worker)] < depth())
       hand(worker);
+  };
+  // round by round, so every worker has its first creature before any gets a second
+  for (int round = 1; round <= in_flight_; ++round) {
+    for (int worker = 1; worker < mpi_.size(); ++worker) {
+      if (next < order.size() && held[static_cast<std::size_t>(worker)] < std::min(round, depth()))
+        hand(worker);
+    }
   }
 
   // every result is answered with the next creature; wait by probe + sleep
@@ -153,11 +169,11 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     span.busy_seconds += result.outcome.wall_seconds;
     ++span.evaluations;
     --outstanding;
+    --held[static_cast<std::size_t>(message.source)];
     // testing aid: a kill in the middle of the generation
     if (2 * span.evaluations >= order.size() && 2 * (span.evaluations - 1) < order.size())
       testKillPoint("evaluation", population.generation);
-    if (next < order.size())
-      hand(message.source);
+    fill(message.source);
   }
   // every result is in, so every request was received
   mpi_.waitPosted();

@@ -51,13 +51,18 @@ class InProcessEvaluator : public PopulationEvaluator {
 };
 
 /// Rank 0's self-scheduler: each worker gets `in_flight` creatures (longest expected first) and
-/// each result is answered with the next creature, so a worker always has its next creature
-/// queued and never waits for rank 0 to wake up and answer. Waits by probe + adaptive sleep,
-/// never spinning. Throws Error(mpi) when a worker sends a malformed or unexpected result.
+/// each result is answered with the next creature, so a worker has its next creature queued and
+/// never waits for rank 0 to wake up and answer. In the tail of a generation (fewer than
+/// kQueueWhileRemainingPerWorker creatures per worker left to hand out) workers hold one
+/// creature, so none waits behind a long one while others idle. Requests are posted (MPI_Isend);
+/// waits by probe + adaptive sleep, never spinning. Throws Error(mpi) when a worker sends a
+/// malformed or unexpected result.
 class MpiScheduler : public PopulationEvaluator {
  public:
   /// Creatures each worker holds at once: the one it evaluates and the next, queued.
   static constexpr int kDefaultInFlight = 2;
+  /// Creatures per worker that must remain unhanded for a worker to hold more than one.
+  static constexpr std::size_t kQueueWhileRemainingPerWorker = 4;
   /// `mpi` must have at least two ranks and outlive the scheduler; `in_flight` >= 1.
   explicit MpiScheduler(MpiContext& mpi, int in_flight = kDefaultInFlight);
   EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) override;

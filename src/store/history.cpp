@@ -37,6 +37,7 @@ struct Column {
   hsize_t width;
   const char* units;
   const char* description;
+  bool added_later = false;  ///< may be missing from files of the same format version: reads as 0
 };
 
 // the per-individual columns (genome_bytes is a separate byte stream)
@@ -90,6 +91,7 @@ const std::vector<Column>& generationColumns() {
       {"workers", nativeType<std::int32_t>, 1, "1", "evaluating ranks"},
       {"distinct_genomes", u64, 1, "1", "distinct genome byte strings (diversity)"},
       {"rank0_serial_seconds", f64, 1, "s", "rank 0 busy outside the evaluation span"},
+      {"rank0_cpu_seconds", f64, 1, "s", "CPU time rank 0 used in the generation (getrusage)", true},
       {"evaluation_span_seconds", f64, 1, "s", "first request sent to last result received"},
       {"worker_busy_seconds", f64, 1, "s", "sum of evaluation wall times"},
       {"worker_idle_seconds", f64, 1, "s", "workers * span - busy"},
@@ -201,6 +203,7 @@ void forEachGenerationField(G& g, Visit visit) {
   visit("workers", g.workers);
   visit("distinct_genomes", g.distinct_genomes);
   visit("rank0_serial_seconds", g.rank0_serial_seconds);
+  visit("rank0_cpu_seconds", g.rank0_cpu_seconds);
   visit("evaluation_span_seconds", g.evaluation_span_seconds);
   visit("worker_busy_seconds", g.worker_busy_seconds);
   visit("worker_idle_seconds", g.worker_idle_seconds);
@@ -306,6 +309,7 @@ HistoryGeneration makeHistoryGeneration(const GenerationRecord& record,
   row.workers = record.workers;
   row.distinct_genomes = distinctGenomes(population);
   row.rank0_serial_seconds = record.rank0_serial_seconds;
+  row.rank0_cpu_seconds = record.rank0_cpu_seconds;
   row.evaluation_span_seconds = record.evaluation_span_seconds;
   row.worker_busy_seconds = record.worker_busy_seconds;
   row.worker_idle_seconds = record.worker_idle_seconds;
@@ -690,14 +694,26 @@ std::vector<HistoryGeneration> HistoryReader::generations() const {
   std::unordered_map<std::string, std::vector<double>> reals;
   std::unordered_map<std::string, std::vector<std::uint64_t>> integers;
   hsize_t rows = std::numeric_limits<hsize_t>::max();
+  std::vector<const Column*> absent;
   for (const Column& c : generationColumns()) {
     hsize_t n = 0;
     bool real = c.type() == H5T_NATIVE_DOUBLE;
+    if (c.added_later && H5Lexists(group.get(), c.name, H5P_DEFAULT) <= 0) {
+      absent.push_back(&c);
+      continue;
+    }
     bool ok = real ? readTable(group.get(), c.name, 1, reals[c.name], n)
                    : readTable(group.get(), c.name, 1, integers[c.name], n);
     if (!ok)
       throw InputError(path_ + ": dataset /generations/" + c.name + " missing or unreadable");
     rows = std::min(rows, n);
+  }
+  // columns an older file lacks read as zeros
+  for (const Column* c : absent) {
+    if (c->type() == H5T_NATIVE_DOUBLE)
+      reals[c->name].assign(rows, 0.0);
+    else
+      integers[c->name].assign(rows, 0);
   }
   std::vector<HistoryGeneration> result(rows);
   for (hsize_t i = 0; i < rows; ++i) {

@@ -67,6 +67,7 @@ HistoryGeneration makeGeneration(std::uint64_t g) {
   row.evaluations = 4;
   row.workers = 2;
   row.distinct_genomes = 5;
+  row.rank0_cpu_seconds = 0.0625;
   row.wall_seconds = 0.3;
   return row;
 }
@@ -150,10 +151,38 @@ TEST(History, RoundTripsAttributesRowsAndGenomeBytes) {
   EXPECT_EQ(generations[2].best_id, 204u);
   EXPECT_EQ(generations[1].workers, 2);
   EXPECT_EQ(generations[1].distinct_genomes, 5u);
+  EXPECT_EQ(generations[1].rank0_cpu_seconds, 0.0625);
+  EXPECT_EQ(generations[1].wall_seconds, 0.3);
   EXPECT_GT(generations[0].unix_time, 1.6e9);
 
   EXPECT_EQ(reader.genomeBytes(103), makeRows(1, 5)[3].genome);
   EXPECT_THROW(reader.genomeBytes(999), InputError);
+}
+
+TEST(History, ReadsAFileWrittenBeforeRank0CpuSecondsAsZero) {
+  // a history whose /generations lacks the column added after format version 1
+  std::string path = tempPath("without_rank0_cpu.h5");
+  writeHistory(path, 2);
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  ASSERT_GE(H5Ldelete(file, "generations/rank0_cpu_seconds", H5P_DEFAULT), 0);
+  H5Fclose(file);
+
+  {
+    HistoryReader reader(path);
+    std::vector<HistoryGeneration> generations = reader.generations();
+    ASSERT_EQ(generations.size(), 2u);
+    EXPECT_EQ(generations[1].rank0_cpu_seconds, 0.0);
+    EXPECT_EQ(generations[1].wall_seconds, 0.3);
+    EXPECT_EQ(generations[1].best, 2.0);
+  }
+
+  // a column that was always there is still required
+  file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  ASSERT_GE(H5Ldelete(file, "generations/wall_seconds", H5P_DEFAULT), 0);
+  H5Fclose(file);
+  EXPECT_NE(openError(path).find("/generations/wall_seconds missing"), std::string::npos);
 }
 
 TEST(History, StoresRealGenomesAndPopulations) {
