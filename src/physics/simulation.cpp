@@ -63,9 +63,19 @@ btVector3 boxInertia(Vec3 size, double mass) {
 
 }  // namespace
 
+// collision memory pools sized for one creature (at most a few dozen parts): Bullet's default
+// pools (4,096 manifolds and algorithms) cost more to set up than a birth check itself; a pool
+// that runs out falls back to the heap, which changes no result
+btDefaultCollisionConstructionInfo creaturePools() {
+  btDefaultCollisionConstructionInfo info;
+  info.m_defaultMaxPersistentManifoldPoolSize = 256;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = 256;
+  return info;
+}
+
 // the Bullet objects of one world, destroyed in reverse order of creation
 struct BulletWorld {
-  btDefaultCollisionConfiguration configuration;
+  btDefaultCollisionConfiguration configuration{creaturePools()};
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btMultiBodyConstraintSolver solver;
