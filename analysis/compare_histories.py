@@ -27,6 +27,7 @@ TIMING_DATASETS = {
     "generations/workers",
     "generations/rank0_serial_seconds",
     "generations/rank0_cpu_seconds",
+    "generations/rank0_dispatch_seconds",
     "generations/evaluation_span_seconds",
     "generations/worker_busy_seconds",
     "generations/worker_idle_seconds",

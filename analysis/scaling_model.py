@@ -22,8 +22,9 @@ Calibration, from a history (--history) or from parameters:
 - per-evaluation costs: the empirical distribution of eval_seconds (evaluated rows only),
   resampled with replacement, or lognormal with --cost-mean and --cost-cv;
 - S0: median rank0_serial_seconds over generations >= 1;
-- L: rank 0's CPU time per hand-out, (rank0_cpu_seconds - rank0_serial_seconds) / evaluations,
-  median over generations (0 for a one-rank run, and for histories without rank0_cpu_seconds);
+- L: rank 0's measured time per hand-out, rank0_dispatch_seconds / evaluations, median over
+  generations (0 for a one-rank run; for older histories without that column, the upper bound
+  (rank0_cpu_seconds - rank0_serial_seconds) / evaluations, which includes rank 0's wake-ups);
 - o: the measured evaluation span of each generation minus the span this model gives with o = 0
   for that generation's own costs, divided by the evaluations per worker (E / W); median over
   generations. It holds whatever keeps a worker from evaluating that queuing does not hide
@@ -224,12 +225,17 @@ def calibrate(path, skip=1):
     later = g["generation"] >= skip if np.any(g["generation"] >= skip) else np.ones(len(g["generation"]), bool)
     serial = float(np.median(g["rank0_serial_seconds"][later]))
     share = float(np.median(g["evaluations"][later] / g["count"][later]))
-    # latency: rank 0's CPU time per hand-out, beyond its serial work (no messages in one rank)
+    # latency: rank 0's measured dispatch time per hand-out (no messages in a one-rank run);
+    # histories without it: its CPU time beyond the serial work, an upper bound (wake-ups included)
     latency = 0.0
-    if "rank0_cpu_seconds" in g and int(attributes.get("rank_count", 1)) > 1:
-        busy = g["rank0_cpu_seconds"][later] - g["rank0_serial_seconds"][later]
-        per = np.maximum(0.0, busy) / np.maximum(1.0, g["evaluations"][later])
-        latency = float(np.median(per)) if len(per) else 0.0
+    if int(attributes.get("rank_count", 1)) > 1 and np.any(later):
+        if "rank0_dispatch_seconds" in g and np.any(g["rank0_dispatch_seconds"][later] > 0):
+            busy = g["rank0_dispatch_seconds"][later]
+        elif "rank0_cpu_seconds" in g:
+            busy = np.maximum(0.0, g["rank0_cpu_seconds"][later] - g["rank0_serial_seconds"][later])
+        else:
+            busy = np.zeros(int(np.sum(later)))
+        latency = float(np.median(busy / np.maximum(1.0, g["evaluations"][later])))
     # overhead: measured span beyond the model's span without it, per evaluation per worker
     estimates = []
     for i, generation in enumerate(g["generation"]):

@@ -122,3 +122,14 @@ def test_compare_weak_sweep_uses_scaled_speedup():
     assert [o["model_speedup"] for o in out] == pytest.approx([1.0, 2.0, 4.0])
     assert [o["measured_speedup"] for o in out] == pytest.approx([1.0, 2.0, 4.0])
     assert all(abs(o["error"]) < 1e-9 for o in out)
+
+
+# a run under mpirun records rank 0's dispatch time: L is measured, positive and far below a
+# 10 ms evaluation; the overhead is what the model cannot otherwise explain, never negative
+def test_calibration_from_a_measured_mpi_run(sweep_dir):
+    import scaling
+
+    runs = scaling.load_sweep([sweep_dir], 1)
+    calibration = sm.calibrate(min(runs, key=lambda r: r["workers"])["path"])
+    assert 0.0 < calibration.latency < 0.5 * float(np.mean(calibration.costs))
+    assert calibration.overhead >= 0.0

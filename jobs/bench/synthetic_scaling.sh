@@ -18,7 +18,9 @@ done
 
 # mean generation wall time (generation 0 has no elites: all 300 evaluated), serial share
 summary() {
-  awk -F'\t' 'NR > 1 { wall += $16; serial += $12; evals += $10; n++ }
+  awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+              { wall += $col["wall_seconds"]; serial += $col["rank0_serial_seconds"];
+                evals += $col["evaluations"]; n++ }
               END { printf "%.4f %.6f %d", wall / n, serial / wall, evals }' "$1/generations.tsv"
 }
 read -r wall2 share2 evals2 <<< "$(summary "$work/np2")"

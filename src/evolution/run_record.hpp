@@ -38,6 +38,7 @@ struct GenerationRecord {
   int workers = 0;                     ///< evaluating ranks
   double rank0_serial_seconds = 0;     ///< rank 0 busy outside the evaluation span (breeding...)
   double rank0_cpu_seconds = 0;        ///< CPU time rank 0 used in the whole generation
+  double rank0_dispatch_seconds = 0;   ///< rank 0 handing out creatures and taking in results
   double evaluation_span_seconds = 0;  ///< first request sent to last result received
   double worker_busy_seconds = 0;      ///< sum of evaluation wall times
   double worker_idle_seconds = 0;      ///< workers * span - busy

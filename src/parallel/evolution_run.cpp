@@ -93,6 +93,7 @@ GenerationRecord generationRecordOf(const HistoryGeneration& row) {
   record.workers = row.workers;
   record.rank0_serial_seconds = row.rank0_serial_seconds;
   record.rank0_cpu_seconds = row.rank0_cpu_seconds;
+  record.rank0_dispatch_seconds = row.rank0_dispatch_seconds;
   record.evaluation_span_seconds = row.evaluation_span_seconds;
   record.worker_busy_seconds = row.worker_busy_seconds;
   record.worker_idle_seconds = row.worker_idle_seconds;
@@ -262,6 +263,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     record.evaluations = span.evaluations;
     record.workers = span.workers;
     record.evaluation_span_seconds = span.span_seconds;
+    record.rank0_dispatch_seconds = span.dispatch_seconds;
     record.worker_busy_seconds = span.busy_seconds;
     record.worker_idle_seconds =
         std::max(0.0, span.workers * span.span_seconds - span.busy_seconds);

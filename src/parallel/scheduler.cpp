@@ -127,18 +127,21 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
       hand(worker);
   };
   // round by round, so every worker has its first creature before any gets a second
+  auto dispatch_start = Clock::now();
   for (int round = 1; round <= in_flight_; ++round) {
     for (int worker = 1; worker < mpi_.size(); ++worker) {
       if (next < order.size() && held[static_cast<std::size_t>(worker)] < std::min(round, depth()))
         hand(worker);
     }
   }
+  span.dispatch_seconds += since(dispatch_start);
 
   // every result is answered with the next creature; wait by probe + sleep
   Message message;
   Backoff backoff;
   while (outstanding > 0) {
     mpi_.completePosted();
+    auto receive_start = Clock::now();
     if (!mpi_.tryReceive(Tag::result, message)) {
       backoff.wait();
       continue;
@@ -174,6 +177,7 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     if (2 * span.evaluations >= order.size() && 2 * (span.evaluations - 1) < order.size())
       testKillPoint("evaluation", population.generation);
     fill(message.source);
+    span.dispatch_seconds += since(receive_start);
   }
   // every result is in, so every request was received
   mpi_.waitPosted();

@@ -18,6 +18,7 @@ struct EvaluationSpan {
   int workers = 0;              ///< ranks that evaluated
   double span_seconds = 0;      ///< first request to last result, wall clock
   double busy_seconds = 0;      ///< sum of the evaluations' wall times
+  double dispatch_seconds = 0;  ///< rank 0 handing out and taking in (its waits left out)
 };
 
 /// The seed handed to the evaluation of individual `id` of a run: a pure function of both.

@@ -91,7 +91,10 @@ const std::vector<Column>& generationColumns() {
       {"workers", nativeType<std::int32_t>, 1, "1", "evaluating ranks"},
       {"distinct_genomes", u64, 1, "1", "distinct genome byte strings (diversity)"},
       {"rank0_serial_seconds", f64, 1, "s", "rank 0 busy outside the evaluation span"},
-      {"rank0_cpu_seconds", f64, 1, "s", "CPU time rank 0 used in the generation (getrusage)", true},
+      {"rank0_cpu_seconds", f64, 1, "s", "CPU time rank 0 used in the generation (getrusage)",
+       true},
+      {"rank0_dispatch_seconds", f64, 1, "s",
+       "rank 0 handing out creatures and taking in results, waits left out", true},
       {"evaluation_span_seconds", f64, 1, "s", "first request sent to last result received"},
       {"worker_busy_seconds", f64, 1, "s", "sum of evaluation wall times"},
       {"worker_idle_seconds", f64, 1, "s", "workers * span - busy"},
@@ -204,6 +207,7 @@ void forEachGenerationField(G& g, Visit visit) {
   visit("distinct_genomes", g.distinct_genomes);
   visit("rank0_serial_seconds", g.rank0_serial_seconds);
   visit("rank0_cpu_seconds", g.rank0_cpu_seconds);
+  visit("rank0_dispatch_seconds", g.rank0_dispatch_seconds);
   visit("evaluation_span_seconds", g.evaluation_span_seconds);
   visit("worker_busy_seconds", g.worker_busy_seconds);
   visit("worker_idle_seconds", g.worker_idle_seconds);
@@ -310,6 +314,7 @@ HistoryGeneration makeHistoryGeneration(const GenerationRecord& record,
   row.distinct_genomes = distinctGenomes(population);
   row.rank0_serial_seconds = record.rank0_serial_seconds;
   row.rank0_cpu_seconds = record.rank0_cpu_seconds;
+  row.rank0_dispatch_seconds = record.rank0_dispatch_seconds;
   row.evaluation_span_seconds = record.evaluation_span_seconds;
   row.worker_busy_seconds = record.worker_busy_seconds;
   row.worker_idle_seconds = record.worker_idle_seconds;

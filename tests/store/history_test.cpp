@@ -68,6 +68,7 @@ HistoryGeneration makeGeneration(std::uint64_t g) {
   row.workers = 2;
   row.distinct_genomes = 5;
   row.rank0_cpu_seconds = 0.0625;
+  row.rank0_dispatch_seconds = 0.03125;
   row.wall_seconds = 0.3;
   return row;
 }
@@ -152,6 +153,7 @@ TEST(History, RoundTripsAttributesRowsAndGenomeBytes) {
   EXPECT_EQ(generations[1].workers, 2);
   EXPECT_EQ(generations[1].distinct_genomes, 5u);
   EXPECT_EQ(generations[1].rank0_cpu_seconds, 0.0625);
+  EXPECT_EQ(generations[1].rank0_dispatch_seconds, 0.03125);
   EXPECT_EQ(generations[1].wall_seconds, 0.3);
   EXPECT_GT(generations[0].unix_time, 1.6e9);
 
@@ -159,13 +161,14 @@ TEST(History, RoundTripsAttributesRowsAndGenomeBytes) {
   EXPECT_THROW(reader.genomeBytes(999), InputError);
 }
 
-TEST(History, ReadsAFileWrittenBeforeRank0CpuSecondsAsZero) {
+TEST(History, ReadsAFileWrittenBeforeTheRank0ColumnsAsZero) {
   // a history whose /generations lacks the column added after format version 1
   std::string path = tempPath("without_rank0_cpu.h5");
   writeHistory(path, 2);
   hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   ASSERT_GE(H5Ldelete(file, "generations/rank0_cpu_seconds", H5P_DEFAULT), 0);
+  ASSERT_GE(H5Ldelete(file, "generations/rank0_dispatch_seconds", H5P_DEFAULT), 0);
   H5Fclose(file);
 
   {
@@ -173,6 +176,7 @@ TEST(History, ReadsAFileWrittenBeforeRank0CpuSecondsAsZero) {
     std::vector<HistoryGeneration> generations = reader.generations();
     ASSERT_EQ(generations.size(), 2u);
     EXPECT_EQ(generations[1].rank0_cpu_seconds, 0.0);
+    EXPECT_EQ(generations[1].rank0_dispatch_seconds, 0.0);
     EXPECT_EQ(generations[1].wall_seconds, 0.3);
     EXPECT_EQ(generations[1].best, 2.0);
   }
