@@ -89,7 +89,7 @@ struct HistoryGeneration {
   int workers = 0;                     ///< evaluating ranks
   std::uint64_t distinct_genomes = 0;  ///< distinct genome byte strings in the generation
   double rank0_serial_seconds = 0;
-  double rank0_cpu_seconds = 0;  ///< CPU time of rank 0 in the generation (0 in older files)
+  double rank0_cpu_seconds = 0;       ///< CPU time of rank 0 in the generation (0 in older files)
   double rank0_dispatch_seconds = 0;  ///< rank 0 handing out and taking in (0 in older files)
   double evaluation_span_seconds = 0;
   double worker_busy_seconds = 0;
