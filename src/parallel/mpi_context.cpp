@@ -43,11 +43,18 @@ bool receiveWaiting(int source, int tag, int rank, Message& out) {
   return true;
 }
 
+constexpr int kProbesBeforeSleeping = 4;
+
 // waits until tryOnce(message) receives one: probe and sleep, since Open MPI's blocking
 // receive would spin a core
 template <class Try>
 Message waitFor(Try tryOnce) {
   Message message;
+  // a message already on its way often needs a probe or two to be matched: no sleep for those
+  for (int attempt = 0; attempt < kProbesBeforeSleeping; ++attempt) {
+    if (tryOnce(message))
+      return message;
+  }
   Backoff backoff;
   while (!tryOnce(message))
     backoff.wait();
