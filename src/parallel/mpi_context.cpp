@@ -162,9 +162,9 @@ void MpiContext::abort(ExitCode code, const std::string& message) const {
 
 void Backoff::wait() {
   // nanosleep, then grow the interval
-  timespec interval{0, micros_ * 1000};
+  timespec interval{micros_ / 1000000, (micros_ % 1000000) * 1000};
   nanosleep(&interval, nullptr);
-  micros_ = std::min(kMax, micros_ * 2);
+  micros_ = std::min(ceiling_, micros_ * 2);
 }
 
 double processCpuSeconds() {

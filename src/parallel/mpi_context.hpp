@@ -4,6 +4,7 @@
 
 #include "cambrian/error.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -75,16 +76,24 @@ class MpiContext {
 };
 
 /// Sleeps for an adaptively growing interval: call wait() while nothing has arrived and reset()
-/// when something did. Starts at 50 us and doubles up to 1 ms.
+/// when something did. Starts at 50 us and doubles up to 1 ms, unless relaxed.
 class Backoff {
  public:
+  static constexpr long kMin = 50, kMax = 1000;
   /// Sleeps for the current interval and grows it.
   void wait();
-  /// Back to the shortest interval.
-  void reset() { micros_ = kMin; }
+  /// Back to the shortest interval (or the relaxed one).
+  void reset() { micros_ = floor_; }
+  /// While nothing is urgent: sleep `micros` at once and every time (at least kMax); `0` goes
+  /// back to the default 50 us .. 1 ms.
+  void relax(long micros) {
+    floor_ = micros > 0 ? std::max(micros, kMax) : kMin;
+    ceiling_ = micros > 0 ? floor_ : kMax;
+    micros_ = std::clamp(micros_, floor_, ceiling_);
+  }
 
  private:
-  static constexpr long kMin = 50, kMax = 1000;
+  long floor_ = kMin, ceiling_ = kMax;
   long micros_ = kMin;
 };
 
