@@ -15,7 +15,7 @@ The model (docs/scaling.md):
 - each evaluation occupies its worker for c + o, o a per-evaluation overhead outside the
   measured eval_seconds (receiving and decoding the request, sending the result);
 - the generation ends when the last evaluation is done (the barrier), and rank 0 then spends
-  its serial time S0 (breeding, statistics, records) before the next one:
+  its serial time S0 (breeding, statistics, history append, checkpoint) before the next one:
       T(W) = S0 + span(W);   speedup S(W) = T(1) / T(W);   efficiency S(W) / W.
 
 Calibration, from a history (--history) or from parameters:

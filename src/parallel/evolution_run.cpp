@@ -174,7 +174,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
       result.individuals.push_back(individualRecordOf(row));
     for (const HistoryGeneration& row : kept.generations) {
       result.generations.push_back(generationRecordOf(row));
-      walls.push_back(row.wall_seconds);
+      walls.push_back(row.wall_seconds - row.checkpoint_seconds);
     }
     breeder.setNextId(checkpoint->next_id);
     digest = RunDigest(checkpoint->digest);
@@ -194,7 +194,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
   std::uint64_t checkpointed = start;
   auto checkpoint_time = Clock::now();
   double checkpoint_seconds_max = 0;
-  auto writeRunCheckpoint = [&](std::uint64_t next_generation) {
+  auto writeRunCheckpoint = [&](std::uint64_t next_generation) -> double {
     auto begin = Clock::now();
     CheckpointState state;
     state.config_text = run.config_text;
@@ -209,10 +209,29 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     });
     testKillPoint("checkpoint_done", next_generation - 1);
     double seconds = std::max(secondsSince(begin), 1e-9);
-    history->setCheckpointSeconds(seconds);
     checkpoint_seconds_max = std::max(checkpoint_seconds_max, seconds);
     checkpointed = next_generation;
     checkpoint_time = Clock::now();
+    return seconds;
+  };
+
+  // the last generation's timings, from its start to now: breeding, evaluation, the history
+  // append and any checkpoint (rewritten in its history row, which was appended before them)
+  auto generation_start = Clock::now();
+  double generation_cpu_start = 0;
+  auto completeGeneration = [&](GenerationRecord& record, double checkpoint_seconds) {
+    record.wall_seconds = secondsSince(generation_start);
+    record.rank0_cpu_seconds = processCpuSeconds() - generation_cpu_start;
+    record.rank0_serial_seconds =
+        std::max(0.0, record.wall_seconds - record.evaluation_span_seconds);
+    if (history) {
+      GenerationTimes times;
+      times.rank0_serial_seconds = record.rank0_serial_seconds;
+      times.rank0_cpu_seconds = record.rank0_cpu_seconds;
+      times.checkpoint_seconds = checkpoint_seconds;
+      times.wall_seconds = record.wall_seconds;
+      history->completeLastGeneration(times);
+    }
   };
 
   // why the run should stop before generation g ("" to go on)
@@ -245,12 +264,19 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     // a clean stop: the last generation checkpointed, then out
     stop_reason = stopReason(g);
     if (!stop_reason.empty()) {
-      if (history && last && checkpointed != g)
-        writeRunCheckpoint(g);
+      // the stop's checkpoint belongs to the generation before it (one of this run's, or the
+      // checkpoint's own generation, already checkpointed)
+      if (history && last && checkpointed != g) {
+        double seconds = writeRunCheckpoint(g);
+        if (g > start) {
+          completeGeneration(result.generations.back(), seconds);
+          walls.back() = result.generations.back().wall_seconds - seconds;
+        }
+      }
       break;
     }
-    auto generation_start = Clock::now();
-    double generation_cpu_start = processCpuSeconds();
+    generation_start = Clock::now();
+    generation_cpu_start = processCpuSeconds();
 
     // breed (generation 0: the initial population), then evaluate what is new
     Population population = last ? breeder.nextGeneration(*last) : breeder.initialPopulation(seeds);
@@ -272,8 +298,6 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     record.wall_seconds = secondsSince(generation_start);
     record.rank0_cpu_seconds = processCpuSeconds() - generation_cpu_start;
     record.rank0_serial_seconds = std::max(0.0, record.wall_seconds - span.span_seconds);
-    result.generations.push_back(record);
-    walls.push_back(record.wall_seconds);
 
     // append and flush the generation to the history
     if (history) {
@@ -284,6 +308,17 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
       testKillPoint("history", g);
     }
     last = std::move(population);
+
+    // a checkpoint every checkpoint_every generations or checkpoint_minutes, and at the end
+    bool due = g + 1 == total ||
+               (run.checkpoint_every > 0 &&
+                g + 1 - checkpointed >= static_cast<std::uint64_t>(run.checkpoint_every)) ||
+               (run.checkpoint_minutes > 0 &&
+                secondsSince(checkpoint_time) >= run.checkpoint_minutes * 60);
+    double checkpoint_seconds = history && due ? writeRunCheckpoint(g + 1) : 0;
+    completeGeneration(record, checkpoint_seconds);
+    result.generations.push_back(record);
+    walls.push_back(record.wall_seconds - checkpoint_seconds);
 
     // progress
     double elapsed = secondsSince(run_start);
@@ -301,15 +336,6 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
           static_cast<unsigned long long>(record.stats.best_id));
       out << detail << std::endl;
     }
-
-    // a checkpoint every checkpoint_every generations or checkpoint_minutes, and at the end
-    bool due = g + 1 == total ||
-               (run.checkpoint_every > 0 &&
-                g + 1 - checkpointed >= static_cast<std::uint64_t>(run.checkpoint_every)) ||
-               (run.checkpoint_minutes > 0 &&
-                secondsSince(checkpoint_time) >= run.checkpoint_minutes * 60);
-    if (history && due)
-      writeRunCheckpoint(g + 1);
   }
 
   // digest, timings and the tables

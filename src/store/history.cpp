@@ -17,6 +17,7 @@
 #include <set>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 
 namespace cambrian {
 
@@ -492,23 +493,30 @@ void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
   }
 }
 
-void HistoryWriter::setCheckpointSeconds(double seconds) {
+void HistoryWriter::completeLastGeneration(const GenerationTimes& times) {
   if (!impl_)
     throw Error(ExitCode::output_file, path_ + ": history file is closed");
   QuietErrors quiet;
-  hid_t dataset = impl_->generations.at("checkpoint_seconds").get();
 
-  // the last row of the column, rewritten in place (SWMR allows changing existing data)
-  Handle space(H5Dget_space(dataset), H5Sclose);
+  // the last row of each column, rewritten in place (SWMR allows changing existing data)
+  hid_t any = impl_->generations.at("wall_seconds").get();
+  Handle space(H5Dget_space(any), H5Sclose);
   hsize_t rows = 0;
   if (H5Sget_simple_extent_dims(space.get(), &rows, nullptr) != 1 || rows == 0)
     return;
   hsize_t offset = rows - 1;
-  bool ok = writeRows(dataset, H5T_NATIVE_DOUBLE, &seconds, offset, 1, 1) &&
-            H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL) >= 0;
-  if (!ok)
-    throw Error(ExitCode::output_file,
-                path_ + ": cannot write checkpoint_seconds of row " + std::to_string(offset));
+  const std::pair<const char*, double> cells[] = {
+      {"rank0_serial_seconds", times.rank0_serial_seconds},
+      {"rank0_cpu_seconds", times.rank0_cpu_seconds},
+      {"checkpoint_seconds", times.checkpoint_seconds},
+      {"wall_seconds", times.wall_seconds}};
+  for (const auto& [column, value] : cells) {
+    if (!writeRows(impl_->generations.at(column).get(), H5T_NATIVE_DOUBLE, &value, offset, 1, 1))
+      throw Error(ExitCode::output_file,
+                  path_ + ": cannot write " + column + " of row " + std::to_string(offset));
+  }
+  if (H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL) < 0)
+    throw Error(ExitCode::output_file, path_ + ": cannot flush row " + std::to_string(offset));
 }
 
 void HistoryWriter::renameTo(const std::string& path) {

@@ -99,6 +99,14 @@ struct HistoryGeneration {
   double unix_time = 0;           ///< seconds since 1970-01-01 UTC when the row was appended
 };
 
+/// The timing cells of a generation row known only after the row is appended.
+struct GenerationTimes {
+  double rank0_serial_seconds = 0;  ///< now including the append and the checkpoint
+  double rank0_cpu_seconds = 0;
+  double checkpoint_seconds = 0;  ///< the checkpoint written after the generation (0: none)
+  double wall_seconds = 0;        ///< breeding to the end of the checkpoint, or of the append
+};
+
 /// The row of a generation: its record plus the diversity of `population`.
 HistoryGeneration makeHistoryGeneration(const GenerationRecord& record,
                                         const Population& population);
@@ -123,9 +131,10 @@ class HistoryWriter {
   /// `generation.unix_time` is set to now when 0.
   void appendGeneration(const std::vector<HistoryIndividual>& individuals,
                         HistoryGeneration generation);
-  /// Sets checkpoint_seconds of the last generation row in place (the checkpoint written after
-  /// it) and flushes; does nothing when no row exists yet.
-  void setCheckpointSeconds(double seconds);
+  /// Rewrites the timing cells of the last generation row in place, once what follows its
+  /// append (the append itself, a checkpoint) is done, and flushes; does nothing when no row
+  /// exists yet.
+  void completeLastGeneration(const GenerationTimes& times);
   /// Renames the open file to `path` (same file system) and makes it the writer's path.
   void renameTo(const std::string& path);
   /// Flushes and closes the file; further appends throw.

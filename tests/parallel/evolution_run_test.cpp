@@ -2,6 +2,8 @@
 
 #include "cambrian/error.hpp"
 
+#include "store/history.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -104,6 +106,45 @@ TEST(EvolutionRun, StoppedAndResumedRunEqualsTheStraightRun) {
   EXPECT_EQ(recordKeys(resumed), recordKeys(straight));
   ASSERT_EQ(resumed.generations.size(), 3u);
   EXPECT_EQ(resumed.generations[2].stats.best, straight.generations[2].stats.best);
+}
+
+// checks that each history row's times hold its history append and its checkpoint, and that the
+// history and the tables agree
+void expectCompleteTimes(const std::string& dir, const RunResult& result) {
+  HistoryReader reader(dir + "/history.h5");
+  const std::vector<HistoryGeneration>& rows = reader.generations();
+  ASSERT_EQ(rows.size(), result.generations.size());
+  double walls = 0;
+  for (std::size_t g = 0; g < rows.size(); ++g) {
+    EXPECT_GT(rows[g].checkpoint_seconds, 0) << g;
+    EXPECT_GE(rows[g].wall_seconds, rows[g].evaluation_span_seconds + rows[g].checkpoint_seconds)
+        << g;
+    EXPECT_GE(rows[g].rank0_serial_seconds, rows[g].checkpoint_seconds) << g;
+    EXPECT_EQ(rows[g].wall_seconds, result.generations[g].wall_seconds) << g;
+    EXPECT_EQ(rows[g].rank0_serial_seconds, result.generations[g].rank0_serial_seconds) << g;
+    EXPECT_EQ(rows[g].rank0_cpu_seconds, result.generations[g].rank0_cpu_seconds) << g;
+    walls += rows[g].wall_seconds;
+  }
+  // the generations follow each other without overlap
+  EXPECT_LE(walls, result.wall_seconds);
+}
+
+TEST(EvolutionRun, AGenerationsTimesHoldItsHistoryAppendAndCheckpoint) {
+  // a checkpoint after every generation (the default)
+  std::ostringstream out;
+  std::string dir = testing::TempDir() + "/cambrian_evolution_run_test_times";
+  expectCompleteTimes(dir, runOnce(dir, out));
+
+  // no cadence: only the stop's checkpoint, which goes into the last row
+  dir += "_stopped";
+  RunSettings stopping;
+  stop_polls = 0;
+  stopping.stop_requested = stopOnSecondPoll;
+  stopping.stop_reason = stopName;
+  stopping.checkpoint_every = 0;
+  RunResult stopped = runOnce(dir, out, true, 3, stopping);
+  ASSERT_TRUE(stopped.stopped);
+  expectCompleteTimes(dir, stopped);
 }
 
 TEST(EvolutionRun, MoreGenerationsExtendAFinishedRun) {

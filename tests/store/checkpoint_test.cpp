@@ -276,7 +276,9 @@ TEST(Checkpoint, MissingButExpectedIsAnError) {
     HistoryGeneration row;
     row.count = 0;
     writer.appendGeneration({}, row);
-    writer.setCheckpointSeconds(0.25);
+    GenerationTimes times;
+    times.checkpoint_seconds = 0.25;
+    writer.completeLastGeneration(times);
   }
   std::tie(code, message) = failure([&] { findCheckpoint(dir); });
   EXPECT_EQ(code, ExitCode::checkpoint);

@@ -424,7 +424,9 @@ TEST(HistoryResume, CutsBackAKilledWritersFileAndAppends) {
       auto* writer = new HistoryWriter(path, makeAttributes());
       for (int g = 0; g < 4; ++g)
         writer->appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
-      writer->setCheckpointSeconds(0.5);
+      GenerationTimes times;
+      times.checkpoint_seconds = 0.5;
+      writer->completeLastGeneration(times);
     } catch (...) {
       _exit(3);
     }
@@ -446,15 +448,26 @@ TEST(HistoryResume, CutsBackAKilledWritersFileAndAppends) {
   HistoryGeneration next = makeGeneration(2);
   next.best = 99;
   writer->appendGeneration(makeRows(2, 5), next);
-  writer->setCheckpointSeconds(0.25);
+  GenerationTimes times;
+  times.rank0_serial_seconds = 0.125;
+  times.rank0_cpu_seconds = 0.375;
+  times.checkpoint_seconds = 0.25;
+  times.wall_seconds = 1.5;
+  writer->completeLastGeneration(times);
   writer->close();
 
   HistoryReader reader(path);
   EXPECT_EQ(reader.attributes().rank_count, 7);
   ASSERT_EQ(reader.generations().size(), 3u);
   EXPECT_EQ(reader.generations()[2].best, 99.0);
+  // the last row's timings rewritten in place, the rest of it and the rows before untouched
   EXPECT_EQ(reader.generations()[2].checkpoint_seconds, 0.25);
+  EXPECT_EQ(reader.generations()[2].rank0_serial_seconds, 0.125);
+  EXPECT_EQ(reader.generations()[2].rank0_cpu_seconds, 0.375);
+  EXPECT_EQ(reader.generations()[2].wall_seconds, 1.5);
+  EXPECT_EQ(reader.generations()[2].rank0_dispatch_seconds, 0.03125);
   EXPECT_EQ(reader.generations()[1].checkpoint_seconds, 0.0);
+  EXPECT_EQ(reader.generations()[1].wall_seconds, 0.3);
   EXPECT_EQ(reader.individuals().size(), 15u);
   EXPECT_EQ(reader.genomeBytes(202), makeRows(2, 5)[2].genome);
 }
