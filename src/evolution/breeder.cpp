@@ -98,6 +98,7 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     copy.parents = {parent.id};
     copy.origin = Origin::elite;
     copy.genome = parent.genome;
+    copy.genome_bytes_cache = parent.genome_bytes_cache;
     copy.outcome = parent.outcome;
     copy.evaluated = true;
     next.individuals.push_back(std::move(copy));

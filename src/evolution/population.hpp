@@ -34,6 +34,12 @@ struct Individual {
   /// The fitness used for selection: the outcome's, or kWorstFitness before evaluation and for
   /// a non-finite value (so ranking is a total order).
   double fitness() const;
+  /// serializeGenome(genome), computed on first use and kept: rank 0 needs the bytes for the
+  /// request, the digest, the history and the checkpoint. A genome is never changed once it is
+  /// bred; code that assigns `genome` after the bytes were read must clear `genome_bytes_cache`.
+  const std::vector<std::uint8_t>& genomeBytes() const;
+
+  mutable std::vector<std::uint8_t> genome_bytes_cache;  ///< empty until genomeBytes()
 };
 
 /// A generation of individuals in creation order (ids increasing).

@@ -55,7 +55,7 @@ void RunDigest::add(const Individual& individual) {
     bytes(word, 8);
   };
   put(individual.id);
-  std::vector<std::uint8_t> genome = serializeGenome(individual.genome);
+  const std::vector<std::uint8_t>& genome = individual.genomeBytes();
   put(genome.size());
   bytes(genome.data(), genome.size());
   double fitness = individual.fitness();

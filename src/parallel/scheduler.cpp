@@ -27,7 +27,7 @@ EvalRequest makeRequest(const Individual& individual, std::uint64_t run_seed) {
   EvalRequest request;
   request.id = individual.id;
   request.eval_seed = evaluationSeed(run_seed, individual.id);
-  request.genome = serializeGenome(individual.genome);
+  request.genome = individual.genomeBytes();
   return request;
 }
 

@@ -121,7 +121,7 @@ Columns toColumns(const Population& population) {
     c.neurons.push_back(o.neurons);
     c.eval_seconds.push_back(i.eval_seconds);
     c.worker_rank.push_back(i.worker_rank);
-    std::vector<std::uint8_t> genome = serializeGenome(i.genome);
+    const std::vector<std::uint8_t>& genome = i.genomeBytes();
     appendBytes(c.genome_bytes, genome.data(), genome.size(), c.genome_offset, c.genome_size);
     appendBytes(c.message_bytes, o.message.data(), o.message.size(), c.message_offset,
                 c.message_size);

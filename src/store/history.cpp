@@ -30,6 +30,7 @@ namespace {
 constexpr hsize_t kRowChunk = 1024;
 constexpr hsize_t kByteChunk = 65536;
 constexpr int kDeflateLevel = 4;
+constexpr int kGenomeDeflateLevel = 0;
 
 // a column of a table group: name, stored type, width (1, or the measure count), unit, meaning
 struct Column {
@@ -121,8 +122,10 @@ std::vector<std::string> statusNames() {
   return names;
 }
 
-// an empty extendible chunked deflate dataset of `width` columns (1: a 1-D dataset)
-Handle createTable(hid_t group, const char* name, hid_t type, hsize_t width, hsize_t chunk) {
+// an empty extendible chunked dataset of `width` columns (1: a 1-D dataset), shuffled and
+// deflated at `deflate_level` (0: stored as is)
+Handle createTable(hid_t group, const char* name, hid_t type, hsize_t width, hsize_t chunk,
+                   int deflate_level) {
   int rank = width == 1 ? 1 : 2;
   hsize_t dims[2] = {0, width};
   hsize_t max_dims[2] = {H5S_UNLIMITED, width};
@@ -130,8 +133,10 @@ Handle createTable(hid_t group, const char* name, hid_t type, hsize_t width, hsi
   Handle space(H5Screate_simple(rank, dims, max_dims), H5Sclose);
   Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   H5Pset_chunk(properties.get(), rank, chunk_dims);
-  H5Pset_shuffle(properties.get());
-  H5Pset_deflate(properties.get(), kDeflateLevel);
+  if (deflate_level > 0) {
+    H5Pset_shuffle(properties.get());
+    H5Pset_deflate(properties.get(), static_cast<unsigned>(deflate_level));
+  }
   return Handle(
       H5Dcreate2(group, name, type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
       H5Dclose);
@@ -284,14 +289,14 @@ HistoryIndividual makeHistoryIndividual(const Individual& individual) {
   row.steps = outcome.steps;
   row.eval_seconds = individual.eval_seconds;
   row.worker_rank = individual.worker_rank;
-  row.genome = serializeGenome(individual.genome);
+  row.genome = individual.genomeBytes();
   return row;
 }
 
 std::uint64_t distinctGenomes(const Population& population) {
   std::set<std::vector<std::uint8_t>> seen;
   for (const Individual& individual : population.individuals)
-    seen.insert(serializeGenome(individual.genome));
+    seen.insert(individual.genomeBytes());
   return seen.size();
 }
 
@@ -375,8 +380,8 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
     if (!group.valid() || !writeString(group.get(), "description", about))
       fail(std::string("cannot create group /") + name);
     for (const Column& column : columns) {
-      Handle dataset =
-          createTable(group.get(), column.name, column.type(), column.width, kRowChunk);
+      Handle dataset = createTable(group.get(), column.name, column.type(), column.width, kRowChunk,
+                                   kDeflateLevel);
       if (!dataset.valid() || !describe(dataset.get(), column.units, column.description))
         fail(std::string("cannot create dataset /") + name + "/" + column.name);
       datasets.emplace(column.name, std::move(dataset));
@@ -403,8 +408,8 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
     fail("cannot write the names attributes of /individuals");
 
   // the genome byte stream
-  impl_->genome_bytes =
-      createTable(individuals.get(), "genome_bytes", H5T_NATIVE_UINT8, 1, kByteChunk);
+  impl_->genome_bytes = createTable(individuals.get(), "genome_bytes", H5T_NATIVE_UINT8, 1,
+                                    kByteChunk, kGenomeDeflateLevel);
   if (!impl_->genome_bytes.valid() ||
       !describe(impl_->genome_bytes.get(), "byte",
                 "serialized genomes (serializeGenome), concatenated; row i is "

@@ -119,6 +119,22 @@ TEST(Breeder, ElitesAreTheBestCopiedWithTheirOutcomesAndNotReEvaluated) {
   EXPECT_EQ(second.individuals.back().parents.size(), 2u);
 }
 
+TEST(Breeder, EveryIndividualsGenomeBytesAreItsSerializedGenome) {
+  // the bytes rank 0 sends, digests and stores are computed once per individual, and elites
+  // inherit their parent's
+  Breeder breeder(smallRun(), GenomeLimits{});
+  Population first = breeder.initialPopulation();
+  fill(first, indices(first.individuals.size(), false));
+  for (const Individual& individual : first.individuals)
+    ASSERT_EQ(individual.genomeBytes(), serializeGenome(individual.genome)) << individual.id;
+  Population second = breeder.nextGeneration(first);
+  for (const Individual& individual : second.individuals) {
+    EXPECT_EQ(individual.genome_bytes_cache.empty(), individual.origin != Origin::elite)
+        << individual.id;
+    EXPECT_EQ(individual.genomeBytes(), serializeGenome(individual.genome)) << individual.id;
+  }
+}
+
 TEST(Breeder, BestFitnessNeverDrops) {
   Breeder breeder(smallRun(), GenomeLimits{});
   Population p = breeder.initialPopulation();
