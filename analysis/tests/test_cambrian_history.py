@@ -61,6 +61,8 @@ def test_generations_match_the_tsv_table(history):
     assert np.all((g["distinct_genomes"] >= 1) & (g["distinct_genomes"] <= POPULATION))
     # every generation of this run is followed by a checkpoint (run.checkpoint_every = 1)
     assert np.all(g["checkpoint_seconds"] > 0)
+    # a generation's wall time holds its evaluation span and the checkpoint that follows it
+    assert np.all(g["wall_seconds"] >= g["evaluation_span_seconds"] + g["checkpoint_seconds"])
     assert history.units("generations", "wall_seconds") == "s"
 
 

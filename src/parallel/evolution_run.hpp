@@ -25,8 +25,8 @@ struct RunSettings {
   bool history = true;       ///< write DIR/history.h5 generation by generation (SWMR)
   std::string config_text;   ///< the effective settings as INI text, stored in the history
   int rank_count = 1;        ///< MPI ranks of the run, stored in the history
-  int checkpoint_every = 1;  ///< checkpoint every this many generations (0: no cadence)
-  double checkpoint_minutes = 0;  ///< ... or when this many minutes passed since the last (0: off)
+  int checkpoint_every = 0;  ///< checkpoint every this many generations (0: no cadence)
+  double checkpoint_minutes = 1;  ///< ... or when this many minutes passed since the last (0: off)
   double max_hours = 0;           ///< stop cleanly before this wall time (0: no limit)
   bool fresh = false;             ///< ignore and remove an existing checkpoint, start over
   std::string test_kill_at;       ///< testing: "POINT:GENERATION" where rank 0 SIGKILLs itself

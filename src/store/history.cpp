@@ -14,7 +14,6 @@
 #include <ctime>
 #include <filesystem>
 #include <limits>
-#include <set>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -294,10 +293,15 @@ HistoryIndividual makeHistoryIndividual(const Individual& individual) {
 }
 
 std::uint64_t distinctGenomes(const Population& population) {
-  std::set<std::vector<std::uint8_t>> seen;
+  // the byte strings sorted in place (no copies), then the runs of equal ones counted
+  std::vector<const std::vector<std::uint8_t>*> genomes;
   for (const Individual& individual : population.individuals)
-    seen.insert(individual.genomeBytes());
-  return seen.size();
+    genomes.push_back(&individual.genomeBytes());
+  auto less = [](auto* a, auto* b) { return *a < *b; };
+  auto equal = [](auto* a, auto* b) { return *a == *b; };
+  std::sort(genomes.begin(), genomes.end(), less);
+  return static_cast<std::uint64_t>(std::unique(genomes.begin(), genomes.end(), equal) -
+                                    genomes.begin());
 }
 
 HistoryGeneration makeHistoryGeneration(const GenerationRecord& record,

@@ -116,7 +116,6 @@ void expectCompleteTimes(const std::string& dir, const RunResult& result) {
   ASSERT_EQ(rows.size(), result.generations.size());
   double walls = 0;
   for (std::size_t g = 0; g < rows.size(); ++g) {
-    EXPECT_GT(rows[g].checkpoint_seconds, 0) << g;
     EXPECT_GE(rows[g].wall_seconds, rows[g].evaluation_span_seconds + rows[g].checkpoint_seconds)
         << g;
     EXPECT_GE(rows[g].rank0_serial_seconds, rows[g].checkpoint_seconds) << g;
@@ -129,11 +128,22 @@ void expectCompleteTimes(const std::string& dir, const RunResult& result) {
   EXPECT_LE(walls, result.wall_seconds);
 }
 
+// which generation rows of DIR/history.h5 record a checkpoint
+std::vector<bool> checkpointed(const std::string& dir) {
+  std::vector<bool> rows;
+  for (const HistoryGeneration& row : HistoryReader(dir + "/history.h5").generations())
+    rows.push_back(row.checkpoint_seconds > 0);
+  return rows;
+}
+
 TEST(EvolutionRun, AGenerationsTimesHoldItsHistoryAppendAndCheckpoint) {
-  // a checkpoint after every generation (the default)
+  // a checkpoint after every generation
   std::ostringstream out;
   std::string dir = testing::TempDir() + "/cambrian_evolution_run_test_times";
-  expectCompleteTimes(dir, runOnce(dir, out));
+  RunSettings every;
+  every.checkpoint_every = 1;
+  expectCompleteTimes(dir, runOnce(dir, out, true, 3, every));
+  EXPECT_EQ(checkpointed(dir), (std::vector<bool>{true, true, true}));
 
   // no cadence: only the stop's checkpoint, which goes into the last row
   dir += "_stopped";
@@ -145,6 +155,25 @@ TEST(EvolutionRun, AGenerationsTimesHoldItsHistoryAppendAndCheckpoint) {
   RunResult stopped = runOnce(dir, out, true, 3, stopping);
   ASSERT_TRUE(stopped.stopped);
   expectCompleteTimes(dir, stopped);
+  EXPECT_EQ(checkpointed(dir), (std::vector<bool>{true}));
+}
+
+TEST(EvolutionRun, TheDefaultCadenceIsAMinuteAndTheLastGeneration) {
+  // generations far shorter than a minute: only the last one is followed by a checkpoint
+  RunSettings defaults;
+  EXPECT_EQ(defaults.checkpoint_every, 0);
+  EXPECT_EQ(defaults.checkpoint_minutes, 1.0);
+  std::ostringstream out;
+  std::string dir = testing::TempDir() + "/cambrian_evolution_run_test_cadence";
+  RunResult result = runOnce(dir, out, true, 4);
+  expectCompleteTimes(dir, result);
+  EXPECT_EQ(checkpointed(dir), (std::vector<bool>{false, false, false, true}));
+
+  // a cadence by the clock that has already passed: every generation
+  RunSettings clock;
+  clock.checkpoint_minutes = 1e-9;
+  runOnce(dir, out, true, 3, clock);
+  EXPECT_EQ(checkpointed(dir), (std::vector<bool>{true, true, true}));
 }
 
 TEST(EvolutionRun, MoreGenerationsExtendAFinishedRun) {

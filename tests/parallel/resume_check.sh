@@ -50,6 +50,7 @@ selection = tournament
 [run]
 seed = 11
 quiet = true
+checkpoint_every = 1
 INI
 
 # the straight run every other run must reproduce
@@ -224,6 +225,7 @@ generations = 3
 [run]
 seed = 4
 quiet = true
+checkpoint_every = 1
 INI
     straight straight
     kill_and_resume walk_killed evaluation:1 1
