@@ -340,7 +340,9 @@ struct HistoryWriter::Impl {
   std::unordered_map<std::string, Handle> individuals;  // column name -> dataset
   std::unordered_map<std::string, Handle> generations;
   Handle genome_bytes;
-  std::uint64_t genome_end = 0;  // bytes in genome_bytes so far
+  std::uint64_t genome_end = 0;           // bytes in genome_bytes so far
+  std::vector<std::uint8_t> byte_buffer;  // a generation's genomes, concatenated (kept: no
+                                          // fresh megabyte to fault in every generation)
 };
 
 HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attributes)
@@ -453,7 +455,12 @@ void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
   using R = HistoryIndividual;
 
   // genome bytes first: rows never point past the stream
-  std::vector<u8> bytes;
+  std::vector<u8>& bytes = m.byte_buffer;
+  std::size_t total = 0;
+  for (const R& row : rows)
+    total += row.genome.size();
+  bytes.clear();
+  bytes.reserve(total);
   std::vector<u64> offsets, sizes;
   for (const R& row : rows) {
     offsets.push_back(m.genome_end + bytes.size());
