@@ -164,7 +164,8 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     HistoryRows kept;
     try {
       history =
-          resumeHistory(run.out_dir + "/history.h5", start, historyAttributes(settings, run), kept);
+          resumeHistory(run.out_dir + "/history.h5", start, historyAttributes(settings, run), kept,
+                        historyChunkRows(static_cast<std::uint64_t>(settings.population)));
     } catch (const InputError& e) {
       throw Error(ExitCode::checkpoint, std::string(e.what()) +
                                             " (needed to resume from checkpoint.h5); "
@@ -186,8 +187,9 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     if (!run.fresh && std::filesystem::exists(run.out_dir + "/history.h5", error))
       out << "cambrian evolve: no checkpoint in " << run.out_dir << ", starting fresh" << std::endl;
     removeCheckpoints(run.out_dir);
-    history = std::make_unique<HistoryWriter>(run.out_dir + "/history.h5",
-                                              historyAttributes(settings, run));
+    history = std::make_unique<HistoryWriter>(
+        run.out_dir + "/history.h5", historyAttributes(settings, run),
+        historyChunkRows(static_cast<std::uint64_t>(settings.population)));
   }
 
   // the checkpoint of the last evaluated generation; its time goes into that generation's row

@@ -27,6 +27,8 @@ namespace {
 
 // rows per chunk of the per-row datasets; bytes per chunk of the genome byte stream
 constexpr hsize_t kRowChunk = 1024;
+// rows per chunk of /generations (one row per append: small, so little is deflated again)
+constexpr hsize_t kGenerationChunk = 64;
 constexpr hsize_t kByteChunk = 65536;
 constexpr int kDeflateLevel = 4;
 constexpr int kGenomeDeflateLevel = 0;
@@ -345,7 +347,14 @@ struct HistoryWriter::Impl {
                                           // fresh megabyte to fault in every generation)
 };
 
-HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attributes)
+std::uint64_t historyChunkRows(std::uint64_t population) {
+  if (population == 0)
+    return kRowChunk;
+  return population * ((64 + population - 1) / population);
+}
+
+HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attributes,
+                             std::uint64_t individual_rows_per_chunk)
     : path_(path), impl_(std::make_unique<Impl>()) {
   QuietErrors quiet;
   auto fail = [&](const std::string& what) {
@@ -381,23 +390,25 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
 
   // one group per table, one dataset per column, with units and descriptions
   auto makeGroup = [&](const char* name, const std::vector<Column>& columns,
-                       std::unordered_map<std::string, Handle>& datasets, const char* about) {
+                       std::unordered_map<std::string, Handle>& datasets, hsize_t chunk,
+                       const char* about) {
     Handle group(H5Gcreate2(file, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
     if (!group.valid() || !writeString(group.get(), "description", about))
       fail(std::string("cannot create group /") + name);
     for (const Column& column : columns) {
-      Handle dataset = createTable(group.get(), column.name, column.type(), column.width, kRowChunk,
-                                   kDeflateLevel);
+      Handle dataset =
+          createTable(group.get(), column.name, column.type(), column.width, chunk, kDeflateLevel);
       if (!dataset.valid() || !describe(dataset.get(), column.units, column.description))
         fail(std::string("cannot create dataset /") + name + "/" + column.name);
       datasets.emplace(column.name, std::move(dataset));
     }
     return group;
   };
+  hsize_t individual_chunk = individual_rows_per_chunk > 0 ? individual_rows_per_chunk : kRowChunk;
   Handle individuals = makeGroup("individuals", individualColumns(), impl_->individuals,
-                                 "one row per evaluated (or copied) individual");
-  Handle generations =
-      makeGroup("generations", generationColumns(), impl_->generations, "one row per generation");
+                                 individual_chunk, "one row per evaluated (or copied) individual");
+  Handle generations = makeGroup("generations", generationColumns(), impl_->generations,
+                                 kGenerationChunk, "one row per generation");
 
   // enum names and measure names / units
   std::vector<std::string> measure_names, measure_units;
@@ -545,7 +556,8 @@ void HistoryWriter::renameTo(const std::string& path) {
 }
 
 std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint64_t generations,
-                                             HistoryAttributes attributes, HistoryRows& kept) {
+                                             HistoryAttributes attributes, HistoryRows& kept,
+                                             std::uint64_t individual_rows_per_chunk) {
   // the old rows (a crashed writer's file opens for SWMR reading)
   kept = HistoryRows{};
   std::vector<HistoryIndividual> individuals;
@@ -568,7 +580,8 @@ std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint6
   }
 
   // a new file with the kept rows, generation by generation, renamed over the old one
-  auto writer = std::make_unique<HistoryWriter>(path + ".resume.tmp", attributes);
+  auto writer =
+      std::make_unique<HistoryWriter>(path + ".resume.tmp", attributes, individual_rows_per_chunk);
   std::size_t next = 0;
   for (std::uint64_t g = 0; g < generations; ++g) {
     std::vector<HistoryIndividual> group;

@@ -121,7 +121,11 @@ std::uint64_t distinctGenomes(const Population& population);
 class HistoryWriter {
  public:
   /// Creates `path`; `attributes.config_hash` and `start_time` are filled in when empty.
-  HistoryWriter(const std::string& path, HistoryAttributes attributes);
+  /// `individual_rows_per_chunk` (0: 1024) sizes the chunks of /individuals: a multiple of the
+  /// rows one append brings (historyChunkRows) fills whole chunks, so no deflated chunk is ever
+  /// read back and compressed again.
+  HistoryWriter(const std::string& path, HistoryAttributes attributes,
+                std::uint64_t individual_rows_per_chunk = 0);
   /// Closes the file (errors are swallowed; call close() to see them).
   ~HistoryWriter();
   HistoryWriter(const HistoryWriter&) = delete;
@@ -161,7 +165,12 @@ struct HistoryRows {
 /// `generations`; `kept` receives the rows kept. Throws InputError naming the file when it is
 /// unreadable or lacks one of those generations, Error(output_file) when it cannot be rewritten.
 std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint64_t generations,
-                                             HistoryAttributes attributes, HistoryRows& kept);
+                                             HistoryAttributes attributes, HistoryRows& kept,
+                                             std::uint64_t individual_rows_per_chunk = 0);
+
+/// Rows per chunk of /individuals for a run appending `population` rows a generation: the
+/// smallest multiple of it of at least 64 rows (population 300: 300; 12: 72).
+std::uint64_t historyChunkRows(std::uint64_t population);
 
 /// Reads a history file, complete or still being written (opened for SWMR reading). Rows are
 /// those every column holds. A missing, truncated, corrupt, non-HDF5 or foreign file throws
