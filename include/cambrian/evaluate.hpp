@@ -55,6 +55,13 @@ enum class WalkNormalisation : std::uint8_t {
   volume,    ///< D / cbrt(total volume) (Minemonics)
 };
 
+/// How the synthetic task's cost varies from creature to creature (task.synthetic_distribution).
+enum class SyntheticDistribution : std::uint8_t {
+  uniform,    ///< mean cost times 1 + synthetic_noise * (2u - 1)
+  lognormal,  ///< lognormal with the mean cost as mean and synthetic_cv as coefficient of variation
+  fixed,      ///< the mean cost, always
+};
+
 struct TaskSettings {
   TaskKind kind = TaskKind::walk;
   double evaluation_time = 10;  ///< s, the measured phase
@@ -68,6 +75,8 @@ struct TaskSettings {
   double synthetic_cost_us = 10000;       ///< busy work per evaluation, microseconds
   double synthetic_cost_per_gene_us = 0;  ///< extra per genome node
   double synthetic_noise = 0;  ///< relative spread of the cost, deterministic per creature
+  SyntheticDistribution synthetic_distribution = SyntheticDistribution::uniform;  ///< cost law
+  double synthetic_cv = 0.5;  ///< lognormal: coefficient of variation of the cost
 };
 
 const char* taskName(TaskKind kind);

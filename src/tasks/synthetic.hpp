@@ -10,11 +10,21 @@
 
 namespace cambrian {
 
-/// The cost in microseconds the synthetic task spends on `genome`:
-/// (synthetic_cost_us + synthetic_cost_per_gene_us * nodes) * (1 + synthetic_noise * (2u - 1)),
-/// with u the first uniform of Rng(eval_seed, RngPurpose::evaluation). Never negative.
+/// The cost in microseconds the synthetic task spends on `genome`: the mean cost
+/// m = synthetic_cost_us + synthetic_cost_per_gene_us * nodes, drawn by synthetic_distribution
+/// from Rng(eval_seed, RngPurpose::evaluation) (a pure function of the three arguments):
+/// - uniform: m * (1 + synthetic_noise * (2u - 1)), u the stream's first uniform;
+/// - lognormal: m * exp(s z - s^2 / 2), s^2 = ln(1 + synthetic_cv^2), z the stream's first
+///   normal (Rng::normal), so the mean is m and the coefficient of variation synthetic_cv;
+/// - fixed: m.
+/// Never negative.
 double syntheticCostMicroseconds(const Genome& genome, const TaskSettings& task,
                                  std::uint64_t eval_seed);
+
+/// e^x from additions, multiplications and a power-of-two scaling only (no libm exp, whose last
+/// bit may differ between C libraries), so a lognormal cost has the same bits on every machine.
+/// Within a few ulps of std::exp; 0 below -745, +inf above 709.78, NaN for NaN.
+double portableExp(double x);
 
 /// The synthetic fitness: a smooth, deterministic function of the genome that evolution can
 /// climb (mean box side of every node plus 0.1 per connection, capped by the node and connection

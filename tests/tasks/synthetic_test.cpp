@@ -1,8 +1,13 @@
 #include "tasks/synthetic.hpp"
 
+#include "cambrian/rng.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
+#include <limits>
+#include <vector>
 
 namespace cambrian {
 namespace {
@@ -47,6 +52,129 @@ TEST(SyntheticTask, CostIsDeterministicAndWithinTheNoiseBand) {
   EXPECT_TRUE(differs);
   task.synthetic_noise = 0;
   EXPECT_EQ(syntheticCostMicroseconds(genome, task, 3), 1200.0);
+}
+
+// mean and standard deviation of a sample
+struct Moments {
+  double mean = 0, sd = 0;
+};
+Moments momentsOf(const std::vector<double>& xs) {
+  Moments m;
+  for (double x : xs)
+    m.mean += x;
+  m.mean /= static_cast<double>(xs.size());
+  for (double x : xs)
+    m.sd += (x - m.mean) * (x - m.mean);
+  m.sd = std::sqrt(m.sd / static_cast<double>(xs.size() - 1));
+  return m;
+}
+
+// the costs of `genome` under `task` for eval seeds 0..n-1
+std::vector<double> costs(const Genome& genome, const TaskSettings& task, std::uint64_t n) {
+  std::vector<double> xs;
+  for (std::uint64_t seed = 0; seed < n; ++seed)
+    xs.push_back(syntheticCostMicroseconds(genome, task, seed));
+  return xs;
+}
+
+TEST(SyntheticTask, UniformIsTheDefaultAndKeepsItsFormula) {
+  TaskSettings task;
+  EXPECT_EQ(task.synthetic_distribution, SyntheticDistribution::uniform);
+  task.synthetic_cost_us = 1000;
+  task.synthetic_cost_per_gene_us = 100;
+  task.synthetic_noise = 0.4;
+  // bit for bit the first uniform of the creature's evaluation stream, as before
+  for (std::uint64_t seed : {0ull, 1ull, 77ull, 123456789ull}) {
+    Rng rng(seed, RngPurpose::evaluation);
+    double expected = 1200.0 * (1 + 0.4 * (2 * rng.uniform() - 1));
+    EXPECT_EQ(syntheticCostMicroseconds(twoNodes(), task, seed), expected) << "seed " << seed;
+  }
+}
+
+TEST(SyntheticTask, LognormalHasTheMeanCostAndTheCoefficientOfVariation) {
+  TaskSettings task;
+  task.synthetic_distribution = SyntheticDistribution::lognormal;
+  task.synthetic_cost_us = 1000;
+  task.synthetic_cost_per_gene_us = 100;
+  task.synthetic_noise = 0.9;  // ignored by lognormal
+  for (double cv : {0.25, 0.5, 1.5}) {
+    task.synthetic_cv = cv;
+    std::vector<double> xs = costs(twoNodes(), task, 40000);
+    Moments m = momentsOf(xs);
+    // sample mean and CV near the settings (4 standard errors of the mean; the CV's error
+    // grows with the tail: about 0.5 % at CV 0.5, 3 % at 1.5)
+    double n = static_cast<double>(xs.size());
+    EXPECT_NEAR(m.mean / 1200, 1, 4 * cv / std::sqrt(n)) << "cv " << cv;
+    EXPECT_NEAR(m.sd / m.mean / cv, 1, cv < 1 ? 0.03 : 0.12) << "cv " << cv;
+    // and lognormal in shape: ln(cost / mean) is normal with mean -s^2/2 and sd s
+    double s2 = std::log(1 + cv * cv);
+    std::vector<double> logs;
+    for (double x : xs) {
+      ASSERT_GT(x, 0);
+      logs.push_back(std::log(x / 1200));
+    }
+    Moments l = momentsOf(logs);
+    EXPECT_NEAR(l.mean, -s2 / 2, 4 * std::sqrt(s2 / n)) << "cv " << cv;
+    EXPECT_NEAR(l.sd / std::sqrt(s2), 1, 4 / std::sqrt(2 * n)) << "cv " << cv;
+  }
+}
+
+TEST(SyntheticTask, EveryDistributionIsDeterministicPerSeed) {
+  TaskSettings task;
+  task.synthetic_cost_us = 500;
+  task.synthetic_noise = 0.3;
+  for (SyntheticDistribution d : {SyntheticDistribution::uniform, SyntheticDistribution::lognormal,
+                                  SyntheticDistribution::fixed}) {
+    task.synthetic_distribution = d;
+    // the same seed twice gives the same bits
+    std::vector<double> a = costs(twoNodes(), task, 200), b = costs(twoNodes(), task, 200);
+    EXPECT_EQ(a, b);
+    // and the outcome's cost measure is that cost
+    Outcome outcome = evaluateSynthetic(twoNodes(), task, 17);
+    EXPECT_EQ(outcome.measure("cost_us"), syntheticCostMicroseconds(twoNodes(), task, 17));
+  }
+  // different seeds differ where the law has a spread
+  task.synthetic_distribution = SyntheticDistribution::lognormal;
+  std::vector<double> xs = costs(twoNodes(), task, 50);
+  EXPECT_NE(momentsOf(xs).sd, 0);
+}
+
+TEST(SyntheticTask, FixedHasNoSpread) {
+  TaskSettings task;
+  task.synthetic_distribution = SyntheticDistribution::fixed;
+  task.synthetic_cost_us = 1000;
+  task.synthetic_cost_per_gene_us = 100;
+  task.synthetic_noise = 0.5;  // ignored by fixed
+  task.synthetic_cv = 2;       // ignored by fixed
+  for (double x : costs(twoNodes(), task, 500))
+    EXPECT_EQ(x, 1200.0);
+}
+
+TEST(SyntheticTask, LognormalWithoutVariationIsTheMeanCost) {
+  TaskSettings task;
+  task.synthetic_distribution = SyntheticDistribution::lognormal;
+  task.synthetic_cost_us = 800;
+  task.synthetic_cv = 0;
+  for (double x : costs(twoNodes(), task, 100))
+    EXPECT_EQ(x, 800.0);
+}
+
+TEST(SyntheticTask, PortableExpAgreesWithTheLibrary) {
+  // a few ulps of std::exp over the range lognormal costs use, and beyond
+  double worst = 0;
+  for (int i = -4000; i <= 4000; ++i) {
+    double x = i * 0.0173;  // -69.2 .. 69.2, not on multiples of ln 2
+    double expected = std::exp(x);
+    worst = std::max(worst, std::abs(portableExp(x) - expected) / expected);
+  }
+  EXPECT_LT(worst, 4 * std::numeric_limits<double>::epsilon());
+  // exact where exact, and the ends of the range
+  EXPECT_EQ(portableExp(0), 1.0);
+  EXPECT_EQ(portableExp(-800), 0.0);
+  EXPECT_EQ(portableExp(800), std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(std::isnan(portableExp(std::numeric_limits<double>::quiet_NaN())));
+  EXPECT_NEAR(portableExp(700) / std::exp(700), 1, 4 * std::numeric_limits<double>::epsilon());
+  EXPECT_NEAR(portableExp(-700) / std::exp(-700), 1, 4 * std::numeric_limits<double>::epsilon());
 }
 
 TEST(SyntheticTask, SpendsAtLeastItsCostAndReportsIt) {
