@@ -177,9 +177,15 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome);
 /// Inverse of serializeGenome; throws InputError naming the field on truncated or bad bytes.
 Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size);
 
-/// Readable text form (docs/genome.md); exact: parseGenomeText(genomeToText(g)) == g.
+/// Current version of the text form ("cambrian-genome 2"). Version 2 ends with an `end`
+/// statement, so a truncated file is detected; version 1 (no `end`) is still read.
+constexpr int kGenomeTextVersion = 2;
+
+/// Readable text form (docs/genome.md), version kGenomeTextVersion; exact:
+/// parseGenomeText(genomeToText(g)) == g.
 std::string genomeToText(const Genome& genome);
-/// Parses the text form; throws InputError naming `source`, the line and the field.
+/// Parses the text form (versions 1 and 2); throws InputError naming `source`, the line and the
+/// field, and for a version-2 text without its final `end`, that it may be truncated.
 Genome parseGenomeText(const std::string& text, const std::string& source = "<text>");
 
 /// Reads a genome file, text or binary (detected by the magic bytes); errors name the file.

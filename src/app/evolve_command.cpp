@@ -32,6 +32,9 @@ struct EvolveSettings {
   std::string selection_name = "truncation";
   std::vector<std::string> seed_genomes;
   std::uint64_t fail_every = 0;
+  std::uint64_t test_worker_abort_at = 0;
+  std::string dispatch_order_name = "largest_first";
+  DispatchSettings dispatch;
 };
 
 // the [evolution] and [run] keys
@@ -110,6 +113,15 @@ po::options_description evolutionOptions(EvolveSettings& s) {
                                             "timing details after each progress line")(
       "run.fail_every", po::value(&s.fail_every)->default_value(s.fail_every),
       "testing: workers fail every creature whose id is a multiple of this (0 = never)")(
+      "run.test_worker_abort_at",
+      po::value(&s.test_worker_abort_at)->default_value(s.test_worker_abort_at),
+      "testing: the worker rank that receives the creature with this id stops with an "
+      "unrecoverable error, ending the job with exit code 8 (0 = never)")(
+      "run.dispatch_order", po::value(&s.dispatch_order_name)->default_value(s.dispatch_order_name),
+      "order in which a generation's creatures are handed out: largest_first (genome size) | "
+      "shuffled | smallest_first; results are the same, only the span changes")(
+      "run.dispatch_seed", po::value(&s.dispatch.seed)->default_value(s.dispatch.seed),
+      "shuffled: seed of the per-generation permutations (0 = the run seed)")(
       "run.checkpoint_every",
       po::value(&s.run.checkpoint_every)->default_value(s.run.checkpoint_every),
       "write DIR/checkpoint.h5 every this many generations (0 = no generation cadence; a "
@@ -297,6 +309,7 @@ Setup parse(int argc, char** argv, bool read_seeds) {
     s.evolution.seed_genomes = splitList(s.seed_genomes);
     validateEvolutionSettings(s.evolution);
     checkRunSettings(s.run);
+    s.dispatch.order = dispatchOrderFromName(s.dispatch_order_name);
   } catch (const ConfigError& e) {
     throw ConfigError(where + e.what());
   }
@@ -354,6 +367,7 @@ int runEvolve(int argc, char** argv) {
   worker.task = s.creature.task;
   worker.physics = s.creature.physics;
   worker.fail_every = s.fail_every;
+  worker.test_abort_at = s.test_worker_abort_at;
 
   try {
     if (!root) {
@@ -364,11 +378,11 @@ int runEvolve(int argc, char** argv) {
     std::unique_ptr<PopulationEvaluator> evaluator;
     MpiScheduler* scheduler = nullptr;
     if (mpi.size() > 1) {
-      auto owned = std::make_unique<MpiScheduler>(mpi);
+      auto owned = std::make_unique<MpiScheduler>(mpi, s.dispatch);
       scheduler = owned.get();
       evaluator = std::move(owned);
     } else {
-      evaluator = std::make_unique<InProcessEvaluator>(worker);
+      evaluator = std::make_unique<InProcessEvaluator>(worker, s.dispatch);
     }
     if (!s.run.quiet) {
       std::cout << "cambrian evolve: " << mpi.size() << " rank(s), " << evaluator->workers()

@@ -126,7 +126,13 @@ po::options_description creatureOptions(CreatureSettings& s) {
       "synthetic task: extra busy work per genome node, microseconds")(
       "task.synthetic_noise",
       po::value(&s.task.synthetic_noise)->default_value(s.task.synthetic_noise),
-      "synthetic task: relative spread of the cost (0..1)");
+      "synthetic task, uniform distribution: relative spread of the cost (0..1)")(
+      "task.synthetic_distribution",
+      po::value(&s.synthetic_distribution_name)->default_value(s.synthetic_distribution_name),
+      "synthetic task: law of the cost around its mean (base + per-gene cost): uniform "
+      "(synthetic_noise) | lognormal (synthetic_cv) | fixed")(
+      "task.synthetic_cv", po::value(&s.task.synthetic_cv)->default_value(s.task.synthetic_cv),
+      "synthetic task, lognormal distribution: coefficient of variation of the cost (0..4)");
   all.add(task);
   return all;
 }
@@ -216,6 +222,18 @@ void finishCreatureSettings(CreatureSettings& s) {
           t.synthetic_cost_per_gene_us, "must be >= 0");
   require(t.synthetic_noise >= 0 && t.synthetic_noise <= 1, "task.synthetic_noise",
           t.synthetic_noise, "must be in [0, 1]");
+  require(t.synthetic_cv >= 0 && t.synthetic_cv <= 4, "task.synthetic_cv", t.synthetic_cv,
+          "must be in [0, 4]");
+  if (s.synthetic_distribution_name == "uniform") {
+    s.task.synthetic_distribution = SyntheticDistribution::uniform;
+  } else if (s.synthetic_distribution_name == "lognormal") {
+    s.task.synthetic_distribution = SyntheticDistribution::lognormal;
+  } else if (s.synthetic_distribution_name == "fixed") {
+    s.task.synthetic_distribution = SyntheticDistribution::fixed;
+  } else {
+    throw ConfigError("task.synthetic_distribution = " + s.synthetic_distribution_name +
+                      ": must be uniform, lognormal or fixed");
+  }
 }
 
 po::variables_map parseOptions(int argc, const char* const* argv,

@@ -23,6 +23,7 @@ struct CreatureSettings {
   std::string task_name = "walk";
   std::string normalisation_name = "none";
   std::string actuation_name = "motor";
+  std::string synthetic_distribution_name = "uniform";
 };
 
 /// Adds the [genome], [physics] and [task] keys, bound to `settings`, with defaults and units.

@@ -52,6 +52,16 @@ int runSimulate(int argc, char** argv) {
     throw Error(ExitCode::usage, "give exactly one of --genome FILE or --random");
   }
   Genome genome = random ? randomGenome(settings.limits, seed) : readGenomeFile(genome_path);
+
+  // a genome file given by the user is checked against the limits, naming the file (a random
+  // genome is valid by construction)
+  if (!random) {
+    try {
+      validateGenome(genome, settings.limits);
+    } catch (const GenomeError& e) {
+      throw InputError(genome_path + ": " + e.what());
+    }
+  }
   if (!save_path.empty())
     writeGenomeFile(save_path, genome);
   if (!export_path.empty() && settings.task.kind == TaskKind::synthetic)

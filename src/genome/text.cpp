@@ -16,6 +16,7 @@ namespace cambrian {
 namespace {
 
 constexpr const char* kHeader = "cambrian-genome";
+constexpr const char* kEnd = "end";  // the last statement of a version-2 text
 
 constexpr const char* kJointNames[] = {"rigid", "revolute", "universal", "spherical"};
 constexpr const char* kShapeNames[] = {"box"};
@@ -318,7 +319,7 @@ void parseControllerFields(Line& line, JointControllerGene& controller) {
 
 std::string genomeToText(const Genome& genome) {
   std::ostringstream out;
-  out << kHeader << " " << kGenomeFormatVersion << "\n";
+  out << kHeader << " " << kGenomeTextVersion << "\n";
 
   // nodes with their neurons and effectors
   for (std::size_t i = 0; i < genome.nodes.size(); ++i) {
@@ -361,6 +362,9 @@ std::string genomeToText(const Genome& genome) {
     for (const NeuronGene& neuron : genome.brain)
       writeNeuron(out, neuron);
   }
+
+  // the end marker: a file cut short lacks it
+  out << kEnd << "\n";
   return out.str();
 }
 
@@ -369,6 +373,9 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
   enum class Section { none, node, connection, brain };
   Section section = Section::none;
   bool have_header = false;
+  int version = 0;
+  int end_line = 0;                   // line of the `end` statement (version 2), 0 before it
+  int last_statement = 0;             // line of the last statement, for the missing-`end` message
   NeuronGene* last_neuron = nullptr;  // target of `input` / `parameter` continuation lines
   std::string where;                  // the current item, for messages
 
@@ -386,23 +393,41 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
     if (!line.more())
       continue;
     std::string keyword(line.next("statement", "a keyword"));
+    last_statement = line_number;
 
     // header first
     if (!have_header) {
       if (keyword != kHeader) {
-        line.fail("expected the header 'cambrian-genome " + std::to_string(kGenomeFormatVersion) +
+        line.fail("expected the header 'cambrian-genome " + std::to_string(kGenomeTextVersion) +
                   "', got '" + keyword + "'");
       }
-      long long version = line.integer("cambrian-genome", 0, 1LL << 32);
-      if (version > kGenomeFormatVersion) {
-        line.fail("format version " + std::to_string(version) + " is newer than this cambrian (" +
-                  std::to_string(kGenomeFormatVersion) + ")");
+      long long number = line.integer("cambrian-genome", 0, 1LL << 32);
+      if (number > kGenomeTextVersion) {
+        line.fail("format version " + std::to_string(number) + " is newer than this cambrian (" +
+                  std::to_string(kGenomeTextVersion) + ")");
       }
-      if (version < 1)
-        line.fail("format version " + std::to_string(version) + " does not exist");
+      if (number < 1)
+        line.fail("format version " + std::to_string(number) + " does not exist");
       if (line.more())
         line.fail("unexpected '" + std::string(line.peek()) + "' after the header");
       have_header = true;
+      version = static_cast<int>(number);
+      continue;
+    }
+
+    // nothing but comments and blank lines after `end`
+    if (end_line > 0) {
+      line.fail("unexpected '" + keyword + "' after `end` (line " + std::to_string(end_line) +
+                "): `end` must be the last statement");
+    }
+    if (keyword == kEnd) {
+      if (version < 2) {
+        line.fail("`end` is a statement of format version 2; this file's header says version " +
+                  std::to_string(version));
+      }
+      if (line.more())
+        line.fail("unexpected '" + std::string(line.peek()) + "' after `end`");
+      end_line = line_number;
       continue;
     }
 
@@ -499,14 +524,20 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
         parseConnectionFields(rest, genome.connections.back());
       } else {
         line.fail("unknown statement '" + keyword +
-                  "' (node, connection, brain, neuron, effector, controller)");
+                  "' (node, connection, brain, neuron, effector, controller, end)");
       }
       last_neuron = nullptr;
     }
   }
   if (!have_header) {
     throw InputError(source + ": empty genome text (expected the header 'cambrian-genome " +
-                     std::to_string(kGenomeFormatVersion) + "')");
+                     std::to_string(kGenomeTextVersion) + "')");
+  }
+
+  // version 2 ends with `end`: without it the text was cut short (version 1 cannot tell)
+  if (version >= 2 && end_line == 0) {
+    throw InputError(source + ":" + std::to_string(last_statement) +
+                     ": missing `end`: the file may be truncated after this line");
   }
   return genome;
 }

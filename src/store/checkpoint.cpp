@@ -457,6 +457,9 @@ bool isRunOnlySetting(const std::string& key) {
       "run.checkpoint_every",
       "run.checkpoint_minutes",
       "run.test_kill_at",
+      "run.test_worker_abort_at",
+      "run.dispatch_order",
+      "run.dispatch_seed",
   };
   return run_only.count(key) > 0;
 }

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
+#include <set>
 
 namespace cambrian {
 namespace {
@@ -87,6 +89,58 @@ TEST(SimulateCommand, BadInput) {
   auto broken = runCambrian("simulate --genome " + truncated);
   EXPECT_EQ(broken.exit_code, code(ExitCode::input_file));
   EXPECT_NE(broken.output.find(truncated), std::string::npos) << broken.output;
+}
+
+// a genome file that parses but breaks a limit is refused with exit 4, naming the file and the
+// field, by simulate as by inspect (it is not evaluated as an invalid_body)
+TEST(SimulateCommand, InvalidGenomeFileNamesFileAndField) {
+  const std::string path = std::string(CAMBRIAN_BINARY_DIR) + "/simulate_invalid.genome";
+  const struct {
+    std::string body, field;
+  } cases[] = {
+      {"node 0 size 9 0.3 0.3\n", "node 0: dimensions.x = 9 is above genome.max_part_size 1.5"},
+      {"node 0 size 0.3 nan 0.3\n", "node 0: dimensions.y = nan is not a number"},
+      {"node 0\nconnection 0 -> 3\n", "connection 0: to = 3"},
+  };
+  for (const auto& c : cases) {
+    std::ofstream(path, std::ios::trunc) << "cambrian-genome 2\n" << c.body << "end\n";
+    for (const std::string command : {"simulate --genome ", "inspect "}) {
+      auto result = runCambrian(command + path + kShort);
+      EXPECT_EQ(result.exit_code, code(ExitCode::input_file)) << command << result.output;
+      EXPECT_NE(result.output.find(path + ": " + c.field), std::string::npos)
+          << command << "expected: " << c.field << "\ngot: " << result.output;
+      EXPECT_EQ(result.output.find("status"), std::string::npos) << command << result.output;
+    }
+  }
+  // the same limits given on the command line make the first file valid
+  std::ofstream(path, std::ios::trunc) << "cambrian-genome 2\nnode 0 size 9 0.3 0.3\nend\n";
+  auto allowed = runCambrian("simulate --genome " + path + " --genome.max_part_size 10" + kShort);
+  EXPECT_EQ(allowed.exit_code, 0) << allowed.output;
+  EXPECT_NE(allowed.output.find("status     ok"), std::string::npos) << allowed.output;
+}
+
+// a text genome cut short (at every line boundary and every 37th byte of walker4.genome) is
+// refused with exit 4 naming the file, never evaluated
+TEST(SimulateCommand, TruncatedGenomeFileIsRefused) {
+  std::ifstream in(kCreatures + "walker4.genome", std::ios::binary);
+  const std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::set<std::size_t> cuts;
+  for (std::size_t at = 0; at + 1 < whole.size(); at += 37)
+    cuts.insert(at);
+  for (std::size_t at = 0; at + 1 < whole.size(); ++at) {
+    if (whole[at] == '\n')
+      cuts.insert(at + 1);
+  }
+  cuts.erase(whole.size());
+  cuts.erase(whole.size() - 1);  // all but the final newline: the whole file
+  ASSERT_GT(cuts.size(), 60u);
+  const std::string path = std::string(CAMBRIAN_BINARY_DIR) + "/simulate_cut.genome";
+  for (std::size_t cut : cuts) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << whole.substr(0, cut);
+    auto result = runCambrian("simulate --genome " + path + kShort);
+    EXPECT_EQ(result.exit_code, code(ExitCode::input_file)) << "cut " << cut << result.output;
+    EXPECT_NE(result.output.find(path + ":"), std::string::npos) << "cut " << cut << result.output;
+  }
 }
 
 // every subcommand has --help

@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
 #include <string>
 
 namespace cambrian {
@@ -156,8 +160,8 @@ TEST(GenomeText, ErrorsNameLineAndField) {
        "walker.genome:3: node 0: 'input' must follow a neuron line"},
       {head + "brain extra\n", "walker.genome:3: brain: unexpected 'extra' after 'brain'"},
       {"cambrian-genome 1\nwibble\n", "walker.genome:2: genome: unknown statement 'wibble'"},
-      {"node 0\n", "walker.genome:1: expected the header 'cambrian-genome 1', got 'node'"},
-      {"cambrian-genome 9\n", "walker.genome:1: format version 9 is newer than this cambrian (1)"},
+      {"node 0\n", "walker.genome:1: expected the header 'cambrian-genome 2', got 'node'"},
+      {"cambrian-genome 9\n", "walker.genome:1: format version 9 is newer than this cambrian (2)"},
       {"# only a comment\n", "walker.genome: empty genome text"},
       {"cambrian-genome 1\ncambrian-genome 1\n",
        "walker.genome:2: the header may appear only once"},
@@ -168,6 +172,93 @@ TEST(GenomeText, ErrorsNameLineAndField) {
         << "text:\n"
         << c.text << "expected: " << c.expected << "\ngot: " << message;
   }
+}
+
+// genomeToText writes the current version: its header, and `end` as the last line
+TEST(GenomeText, WritesVersionTwoWithEnd) {
+  std::string text = genomeToText(randomGenome(GenomeLimits{}, 3));
+  EXPECT_EQ(text.rfind("cambrian-genome " + std::to_string(kGenomeTextVersion) + "\n", 0), 0u)
+      << text;
+  ASSERT_GE(text.size(), 5u);
+  EXPECT_EQ(text.substr(text.size() - 5), "\nend\n") << text;
+}
+
+// version 2 needs `end` as its last statement; comments and blank lines may follow it
+TEST(GenomeText, VersionTwoEndsWithEnd) {
+  const std::string body = "cambrian-genome 2\nnode 0 size 0.3 0.3 0.3\nnode 1\n";
+  Genome g = parseGenomeText(body + "end\n\n# a trailing comment\n   \n");
+  ASSERT_EQ(g.nodes.size(), 2u);
+  EXPECT_EQ(g.nodes[0].dimensions, (Vec3{0.3, 0.3, 0.3}));
+  EXPECT_EQ(parseGenomeText(body + "end"), g);  // no newline after `end`
+  EXPECT_EQ(parseGenomeText(body + "end # done\n"), g);
+
+  struct Case {
+    std::string text, expected;
+  };
+  const Case cases[] = {
+      {body, "walker.genome:3: missing `end`: the file may be truncated"},
+      {body + "\n# a comment is not an end\n",
+       "walker.genome:3: missing `end`: the file may be truncated"},
+      {body + "end\nnode 2\n",
+       "walker.genome:5: unexpected 'node' after `end` (line 4): `end` must be the last statement"},
+      {body + "end\n\nend\n", "walker.genome:6: unexpected 'end' after `end` (line 4)"},
+      {body + "end now\n", "walker.genome:4: unexpected 'now' after `end`"},
+      {"cambrian-genome 2\n", "walker.genome:1: missing `end`: the file may be truncated"},
+      {"cambrian-genome 1\nnode 0\nend\n",
+       "walker.genome:3: `end` is a statement of format version 2; this file's header says "
+       "version 1"},
+  };
+  for (const Case& c : cases) {
+    std::string message = failure(c.text);
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << "text:\n"
+        << c.text << "expected: " << c.expected << "\ngot: " << message;
+  }
+}
+
+// version 1 files (no `end`) still read, and mean the same as in version 2
+TEST(GenomeText, ReadsVersionOne) {
+  const std::string nodes = "node 0 size 0.3 0.2 0.1 joint rigid\nnode 1 density 500\n";
+  Genome one = parseGenomeText("cambrian-genome 1\n" + nodes);
+  ASSERT_EQ(one.nodes.size(), 2u);
+  EXPECT_EQ(one.nodes[1].density, 500);
+  EXPECT_EQ(parseGenomeText("cambrian-genome 2\n" + nodes + "end\n"), one);
+}
+
+// a version-2 file cut short anywhere is refused, naming the file; the cuts are every line
+// boundary and every 37th byte of walker4.genome (the whole file parses)
+TEST(GenomeText, TruncatedFilesAreRefused) {
+  const std::string source = std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/walker4.genome";
+  std::ifstream in(source, std::ios::binary);
+  const std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(whole.size(), 1000u);
+  ASSERT_NO_THROW(readGenomeFile(source));
+
+  // every cut that loses at least the `d` of the final `end` (the last byte is its newline)
+  std::set<std::size_t> cuts;
+  for (std::size_t at = 0; at + 1 < whole.size(); at += 37)
+    cuts.insert(at);
+  for (std::size_t at = 0; at + 1 < whole.size(); ++at) {
+    if (whole[at] == '\n')
+      cuts.insert(at + 1);
+  }
+  cuts.erase(whole.size());
+  cuts.erase(whole.size() - 1);
+  ASSERT_GT(cuts.size(), 60u);
+
+  const std::filesystem::path path =
+      std::filesystem::path(CAMBRIAN_BINARY_DIR) / "text_test_truncated.genome";
+  for (std::size_t cut : cuts) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << whole.substr(0, cut);
+    try {
+      readGenomeFile(path.string());
+      ADD_FAILURE() << "a cut at byte " << cut << " of " << whole.size() << " parsed";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(path.string() + ":", 0), 0u)
+          << "cut at byte " << cut << ": " << e.what();
+    }
+  }
+  std::filesystem::remove(path);
 }
 
 // the source name defaults to <text>
