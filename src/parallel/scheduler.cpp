@@ -10,12 +10,17 @@
 #include <chrono>
 #include <iostream>
 #include <numeric>
+#include <utility>
 
 namespace cambrian {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// the individual counter of the shuffled dispatch order's stream: no creature has this id, so
+// the stream is none of the evaluation seeds' Rng(run seed, evaluation, 0, id)
+constexpr std::uint64_t kDispatchStream = ~std::uint64_t{0};
 
 // seconds since `start`
 double since(Clock::time_point start) {
@@ -46,20 +51,44 @@ std::uint64_t evaluationSeed(std::uint64_t run_seed, std::uint64_t id) {
   return rng.nextU64();
 }
 
-std::vector<std::size_t> schedulingOrder(const Population& population) {
-  // pending individuals, biggest genome first, then by id
+DispatchOrder dispatchOrderFromName(const std::string& name) {
+  if (name == "largest_first")
+    return DispatchOrder::largest_first;
+  if (name == "shuffled")
+    return DispatchOrder::shuffled;
+  if (name == "smallest_first")
+    return DispatchOrder::smallest_first;
+  throw ConfigError("run.dispatch_order = " + name +
+                    ": must be largest_first, shuffled or smallest_first");
+}
+
+std::vector<std::size_t> schedulingOrder(const Population& population,
+                                         const DispatchSettings& dispatch, std::uint64_t run_seed) {
+  // pending individuals, in population order (ids increasing)
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < population.individuals.size(); ++i) {
     if (!population.individuals[i].evaluated)
       order.push_back(i);
   }
+
+  // shuffled: Fisher-Yates from the generation's own stream, whatever the results so far
+  if (dispatch.order == DispatchOrder::shuffled) {
+    Rng rng(dispatch.seed != 0 ? dispatch.seed : run_seed, RngPurpose::evaluation,
+            population.generation, kDispatchStream);
+    for (std::size_t i = order.size(); i > 1; --i)
+      std::swap(order[i - 1], order[rng.below(i)]);
+    return order;
+  }
+
+  // by genome size, largest or smallest first, ties by id
+  bool largest = dispatch.order == DispatchOrder::largest_first;
   auto size = [&](std::size_t i) {
     const Genome& g = population.individuals[i].genome;
     return g.nodes.size() + g.connections.size();
   };
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     if (size(a) != size(b))
-      return size(a) > size(b);
+      return largest ? size(a) > size(b) : size(a) < size(b);
     return population.individuals[a].id < population.individuals[b].id;
   });
   return order;
@@ -70,7 +99,7 @@ EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_
   span.workers = 1;
   auto start = Clock::now();
   // one after another, in scheduling order
-  std::vector<std::size_t> order = schedulingOrder(population);
+  std::vector<std::size_t> order = schedulingOrder(population, dispatch_, run_seed);
   std::size_t order_size = order.size();
   for (std::size_t index : order) {
     Individual& individual = population.individuals[index];
@@ -86,8 +115,8 @@ EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_
   return span;
 }
 
-MpiScheduler::MpiScheduler(MpiContext& mpi, int in_flight)
-    : mpi_(mpi), in_flight_(std::max(1, in_flight)) {
+MpiScheduler::MpiScheduler(MpiContext& mpi, const DispatchSettings& dispatch, int in_flight)
+    : mpi_(mpi), dispatch_(dispatch), in_flight_(std::max(1, in_flight)) {
   if (mpi.size() < 2)
     throw Error(ExitCode::mpi, "MpiScheduler needs at least 2 ranks");
 }
@@ -99,7 +128,7 @@ int MpiScheduler::workers() const {
 EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_seed) {
   EvaluationSpan span;
   span.workers = workers();
-  std::vector<std::size_t> order = schedulingOrder(population);
+  std::vector<std::size_t> order = schedulingOrder(population, dispatch_, run_seed);
   std::vector<char> outstanding_for(population.individuals.size(), 0);
   auto start = Clock::now();
 

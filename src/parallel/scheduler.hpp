@@ -7,6 +7,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace cambrian {
 
@@ -24,9 +26,34 @@ struct EvaluationSpan {
 /// The seed handed to the evaluation of individual `id` of a run: a pure function of both.
 std::uint64_t evaluationSeed(std::uint64_t run_seed, std::uint64_t id);
 
-/// Order in which pending individuals are handed out: longest expected first (genome nodes +
-/// connections, descending), ties by id. Returns indices into the population.
-std::vector<std::size_t> schedulingOrder(const Population& population);
+/// The order in which a generation's pending individuals are handed out (run.dispatch_order).
+/// Results are stored by id, so no order changes them: only which worker gets which creature
+/// when, and so the span of a generation.
+enum class DispatchOrder : std::uint8_t {
+  largest_first,   ///< genome nodes + connections descending, ties by id: longest expected first
+  shuffled,        ///< a permutation drawn per generation from the dispatch seed
+  smallest_first,  ///< genome nodes + connections ascending, ties by id
+};
+
+/// How pending individuals are ordered.
+struct DispatchSettings {
+  DispatchOrder order = DispatchOrder::largest_first;
+  /// shuffled: the permutation of generation g comes from Rng(seed, evaluation, g, 2^64 - 1)
+  /// (a counter no evaluation seed uses); 0 = the run seed
+  std::uint64_t seed = 0;
+};
+
+/// "largest_first" | "shuffled" | "smallest_first"; throws ConfigError naming run.dispatch_order
+/// and the value otherwise.
+DispatchOrder dispatchOrderFromName(const std::string& name);
+
+/// Order in which pending individuals are handed out (`dispatch.order`; by default longest
+/// expected first: genome nodes + connections descending, ties by id). A pure function of the
+/// population's genomes, ids, evaluated flags and generation, `dispatch` and `run_seed`.
+/// Returns indices into the population.
+std::vector<std::size_t> schedulingOrder(const Population& population,
+                                         const DispatchSettings& dispatch = {},
+                                         std::uint64_t run_seed = 0);
 
 /// Evaluates every individual of a population that has no outcome yet; outcomes are stored by
 /// id, never by arrival order.
@@ -42,16 +69,18 @@ class PopulationEvaluator {
 /// Evaluates in this process, one creature after another (a job with one rank).
 class InProcessEvaluator : public PopulationEvaluator {
  public:
-  /// `settings` are the creature settings every evaluation uses.
-  explicit InProcessEvaluator(const WorkerSettings& settings) : settings_(settings) {}
+  /// `settings` are the creature settings every evaluation uses; `dispatch` the order.
+  explicit InProcessEvaluator(const WorkerSettings& settings, const DispatchSettings& dispatch = {})
+      : settings_(settings), dispatch_(dispatch) {}
   EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) override;
   int workers() const override { return 1; }
 
  private:
   WorkerSettings settings_;
+  DispatchSettings dispatch_;
 };
 
-/// Rank 0's self-scheduler: each worker gets `in_flight` creatures (longest expected first) and
+/// Rank 0's self-scheduler: each worker gets `in_flight` creatures (in schedulingOrder) and
 /// each result is answered with the next creature, so a worker has its next creature queued and
 /// never waits for rank 0 to wake up and answer. In the tail of a generation (fewer than
 /// kQueueWhileRemainingPerWorker creatures per worker left to hand out) workers hold one
@@ -64,8 +93,10 @@ class MpiScheduler : public PopulationEvaluator {
   static constexpr int kDefaultInFlight = 2;
   /// Creatures per worker that must remain unhanded for a worker to hold more than one.
   static constexpr std::size_t kQueueWhileRemainingPerWorker = 4;
-  /// `mpi` must have at least two ranks and outlive the scheduler; `in_flight` >= 1.
-  explicit MpiScheduler(MpiContext& mpi, int in_flight = kDefaultInFlight);
+  /// `mpi` must have at least two ranks and outlive the scheduler; creatures are handed out in
+  /// schedulingOrder(population, dispatch, run seed); `in_flight` >= 1.
+  explicit MpiScheduler(MpiContext& mpi, const DispatchSettings& dispatch = {},
+                        int in_flight = kDefaultInFlight);
   EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) override;
   int workers() const override;
   /// Sends the stop message to every worker (once; later calls do nothing).
@@ -73,6 +104,7 @@ class MpiScheduler : public PopulationEvaluator {
 
  private:
   MpiContext& mpi_;
+  DispatchSettings dispatch_;
   int in_flight_;
   bool stopped_ = false;
 };

@@ -39,23 +39,35 @@ EvalResult evaluateRequest(const EvalRequest& request, const WorkerSettings& set
   return result;
 }
 
+EvalResult serveRequest(const Message& message, const WorkerSettings& settings, int rank,
+                        std::ostream& log) {
+  // a request, well formed, or the rank cannot go on
+  if (message.tag != Tag::request) {
+    throw Error(ExitCode::worker_failure,
+                "unexpected message tag " + std::to_string(static_cast<int>(message.tag)));
+  }
+  EvalRequest request;
+  try {
+    request = decodeRequest(message.bytes);
+  } catch (const Error& e) {
+    throw Error(ExitCode::worker_failure, e.what());
+  }
+  // testing aid: an unrecoverable error, outside the per-creature catch
+  if (settings.test_abort_at != 0 && request.id == settings.test_abort_at) {
+    throw Error(ExitCode::worker_failure, "injected unrecoverable error on receiving creature " +
+                                              std::to_string(request.id) +
+                                              " (run.test_worker_abort_at)");
+  }
+  return evaluateRequest(request, settings, rank, log);
+}
+
 void runWorker(MpiContext& mpi, const WorkerSettings& settings) {
   // serve requests until told to stop
   for (;;) {
     Message message = mpi.receiveAny(0);
     if (message.tag == Tag::stop)
       return;
-    if (message.tag != Tag::request) {
-      throw Error(ExitCode::worker_failure,
-                  "unexpected message tag " + std::to_string(static_cast<int>(message.tag)));
-    }
-    EvalRequest request;
-    try {
-      request = decodeRequest(message.bytes);
-    } catch (const Error& e) {
-      throw Error(ExitCode::worker_failure, e.what());
-    }
-    EvalResult result = evaluateRequest(request, settings, mpi.rank(), std::cerr);
+    EvalResult result = serveRequest(message, settings, mpi.rank(), std::cerr);
     mpi.send(0, Tag::result, encodeResult(result));
   }
 }

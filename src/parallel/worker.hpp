@@ -5,13 +5,12 @@
 #include "cambrian/genome.hpp"
 
 #include "parallel/messages.hpp"
+#include "parallel/mpi_context.hpp"
 
 #include <cstdint>
 #include <iosfwd>
 
 namespace cambrian {
-
-class MpiContext;
 
 /// How a worker evaluates creatures (the same on every rank).
 struct WorkerSettings {
@@ -21,6 +20,10 @@ struct WorkerSettings {
   /// Testing aid: throw inside the evaluation of every creature whose id is a multiple of this
   /// (0 = never), to exercise the failure path.
   std::uint64_t fail_every = 0;
+  /// Testing aid: on receiving the creature with this id, the worker rank stops with an
+  /// unrecoverable Error(worker_failure), outside the per-creature catch (0 = never). Only worker
+  /// ranks serve requests, so a one-rank (in-process) run never stops for it.
+  std::uint64_t test_abort_at = 0;
 };
 
 /// Evaluates one request. Never throws: an exception (bad genome bytes, an error inside
@@ -29,8 +32,15 @@ struct WorkerSettings {
 EvalResult evaluateRequest(const EvalRequest& request, const WorkerSettings& settings, int rank,
                            std::ostream& log);
 
+/// One message from rank 0 that is not the stop message: decodes the request and evaluates it
+/// (evaluateRequest). Throws Error(worker_failure) when the message is not a well-formed request,
+/// and for the creature `settings.test_abort_at`; the message names the creature or the tag.
+EvalResult serveRequest(const Message& message, const WorkerSettings& settings, int rank,
+                        std::ostream& log);
+
 /// The worker loop: waits for requests from rank 0 (probe + sleep, no spinning), answers each with
-/// its result, returns on the stop message. Throws Error(worker_failure) on a malformed message.
+/// its result (serveRequest), returns on the stop message. Throws Error(worker_failure) on a
+/// malformed message or the injected test_abort_at.
 void runWorker(MpiContext& mpi, const WorkerSettings& settings);
 
 }  // namespace cambrian

@@ -1,8 +1,15 @@
 #include "parallel/scheduler.hpp"
 
+#include "cambrian/error.hpp"
+
 #include "evolution/breeder.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace cambrian {
 namespace {
@@ -26,6 +33,104 @@ TEST(Scheduler, LongestExpectedFirstTiesById) {
     EXPECT_TRUE(size(order[k - 1]) > size(order[k]) ||
                 (size(order[k - 1]) == size(order[k]) && order[k - 1] < order[k]));
     EXPECT_NE(order[k], 3u);
+  }
+}
+
+// genome nodes + connections of individual i
+std::size_t sizeOf(const Population& p, std::size_t i) {
+  return p.individuals[i].genome.nodes.size() + p.individuals[i].genome.connections.size();
+}
+
+// the indices of the pending individuals, sorted
+std::vector<std::size_t> sorted(std::vector<std::size_t> order) {
+  std::sort(order.begin(), order.end());
+  return order;
+}
+
+TEST(Scheduler, LargestFirstIsTheDefault) {
+  Population p = smallPopulation();
+  EXPECT_EQ(DispatchSettings{}.order, DispatchOrder::largest_first);
+  EXPECT_EQ(schedulingOrder(p, DispatchSettings{}, 7), schedulingOrder(p));
+}
+
+TEST(Scheduler, SmallestFirstTiesById) {
+  Population p = smallPopulation();
+  p.individuals[5].evaluated = true;
+  std::vector<std::size_t> order =
+      schedulingOrder(p, DispatchSettings{DispatchOrder::smallest_first, 0}, 1);
+  EXPECT_EQ(order.size(), 11u);
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    EXPECT_TRUE(sizeOf(p, order[k - 1]) < sizeOf(p, order[k]) ||
+                (sizeOf(p, order[k - 1]) == sizeOf(p, order[k]) && order[k - 1] < order[k]));
+  }
+  // the same creatures as largest first, and (genomes of different sizes) not in its order
+  EXPECT_EQ(sorted(order), sorted(schedulingOrder(p)));
+  EXPECT_NE(order, schedulingOrder(p));
+}
+
+TEST(Scheduler, ShuffledIsASeededPermutationPerGeneration) {
+  Population p = smallPopulation();
+  p.individuals[2].evaluated = true;
+  DispatchSettings shuffled{DispatchOrder::shuffled, 0};
+  std::vector<std::size_t> order = schedulingOrder(p, shuffled, 5);
+  // every pending individual once
+  EXPECT_EQ(sorted(order), sorted(schedulingOrder(p)));
+  // a pure function of seed and generation
+  EXPECT_EQ(order, schedulingOrder(p, shuffled, 5));
+  EXPECT_NE(order, schedulingOrder(p, shuffled, 6));
+  // run.dispatch_seed, when given, instead of the run seed
+  EXPECT_EQ(schedulingOrder(p, DispatchSettings{DispatchOrder::shuffled, 6}, 5),
+            schedulingOrder(p, shuffled, 6));
+  Population later = p;
+  later.generation = 1;
+  EXPECT_NE(order, schedulingOrder(later, shuffled, 5));
+  // and not just the size order or the id order
+  EXPECT_NE(order, schedulingOrder(p));
+  EXPECT_NE(order, sorted(order));
+}
+
+TEST(Scheduler, ShuffledIsIndependentOfTheResults) {
+  Population a = smallPopulation(), b = smallPopulation();
+  // outcomes of evaluated individuals do not enter the order
+  a.individuals[0].evaluated = b.individuals[0].evaluated = true;
+  a.individuals[0].outcome.fitness = 1;
+  b.individuals[0].outcome.fitness = 99;
+  DispatchSettings shuffled{DispatchOrder::shuffled, 3};
+  EXPECT_EQ(schedulingOrder(a, shuffled, 1), schedulingOrder(b, shuffled, 1));
+}
+
+TEST(Scheduler, DispatchOrderNames) {
+  EXPECT_EQ(dispatchOrderFromName("largest_first"), DispatchOrder::largest_first);
+  EXPECT_EQ(dispatchOrderFromName("shuffled"), DispatchOrder::shuffled);
+  EXPECT_EQ(dispatchOrderFromName("smallest_first"), DispatchOrder::smallest_first);
+  try {
+    dispatchOrderFromName("random");
+    ADD_FAILURE() << "no ConfigError for 'random'";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("run.dispatch_order = random"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Scheduler, InProcessResultsDoNotDependOnTheDispatchOrder) {
+  WorkerSettings settings;
+  settings.task.kind = TaskKind::synthetic;
+  settings.task.synthetic_cost_us = 20;
+  settings.task.synthetic_noise = 0.5;
+  // the same outcomes, by id, whichever order evaluates them
+  std::vector<Population> done;
+  for (DispatchOrder order :
+       {DispatchOrder::largest_first, DispatchOrder::shuffled, DispatchOrder::smallest_first}) {
+    InProcessEvaluator evaluator(settings, DispatchSettings{order, 0});
+    Population p = smallPopulation();
+    evaluator.evaluate(p, 4);
+    done.push_back(std::move(p));
+  }
+  for (const Population& p : done) {
+    for (std::size_t i = 0; i < p.individuals.size(); ++i) {
+      EXPECT_EQ(p.individuals[i].outcome.fitness, done[0].individuals[i].outcome.fitness);
+      EXPECT_EQ(p.individuals[i].outcome.measures, done[0].individuals[i].outcome.measures);
+    }
   }
 }
 
