@@ -1,15 +1,31 @@
 #!/usr/bin/env bash
 # MPI checks of `cambrian evolve`, run by CTest at several rank counts.
 # usage: evolve_check.sh MODE CAMBRIAN MPIEXEC NPFLAG NP WORKDIR
-#   same_run:   the run at NP ranks has the digest and individuals table (minus timing and rank
-#               columns) of the single-rank in-process run
-#   bad_config: impossible settings exit with the config code (3) on every rank, no hang
+#   same_run:       the run at NP ranks has the digest and individuals table (minus timing and
+#                   rank columns) of the single-rank in-process run, and every worker took part
+#   bad_config:     impossible settings on the command line and in an INI file: the documented
+#                   exit code of each case (2 for a command line that does not parse, 3 for a
+#                   bad value), one error line naming the file, the key and the value, nothing
+#                   in the output directory, every rank gone before the time limit
 #   worker_failure: an exception inside a worker's evaluation becomes a failed outcome
-#   rank0_idle: rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
-#               the run's wall time (a busy-polling rank 0 would use all of it)
+#   output_failure: rank 0 cannot write its output (at the start: --out below a regular file;
+#                   at the end: individuals.tsv is a directory): exit 5 (output_file), the
+#                   message names rank 0 and the path, every rank gone before the time limit
+#   worker_abort:   an unrecoverable error on a worker rank (run.test_worker_abort_at): exit 8
+#                   (worker_failure), the message names that rank, no hang; the setting is
+#                   run-only (a resume may add it), and the aborted run resumes to the straight
+#                   run's digest
+#   dispatch_order: shuffled, smallest_first and a shuffled run with its own seed give the
+#                   digest and individuals table of largest_first, also when a resume changes
+#                   the order; at 2 ranks the single worker evaluates generation 0 in a
+#                   different order under each (the setting reaches the scheduler)
+#   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
+#                   the run's wall time (a busy-polling rank 0 would use all of it)
+# Every job runs under `timeout`: a job still running after $limit s is a failure (a rank that
+# did not exit), never a hung test.
 set -euo pipefail
 mode=$1 cambrian=$2 mpiexec=$3 npflag=$4 np=$5 work=$6
-mpirun_() { "$mpiexec" "$npflag" "$np" --oversubscribe "$@"; }
+limit=60
 rm -rf "$work" && mkdir -p "$work"
 cat > "$work/run.ini" <<INI
 [task]
@@ -26,67 +42,274 @@ seed = 5
 quiet = true
 INI
 
+# a failed check: what was expected and what happened, then exit 1
+fail() {
+  echo "FAIL: $mode at $np ranks: $*" >&2
+  exit 1
+}
+
+# runs `cambrian evolve ARGS` as job NAME at RANKS ranks (1: in process, without mpiexec) under
+# the time limit; stdout to $work/NAME.out, stderr to $work/NAME.err, exit code to $rc
+rc=0
+job() {
+  local name=$1 ranks=$2
+  shift 2
+  local launch=()
+  if [ "$ranks" -gt 1 ]; then
+    launch=("$mpiexec" "$npflag" "$ranks" --oversubscribe)
+  fi
+  set +e
+  timeout -k 10 "$limit" "${launch[@]}" "$cambrian" evolve "$@" \
+    > "$work/$name.out" 2> "$work/$name.err"
+  rc=$?
+  set -e
+  if [ "$rc" -eq 124 ] || [ "$rc" -eq 137 ]; then
+    fail "$name: still running after $limit s (a rank did not exit); stderr ends:" \
+      "$(tail -n 5 "$work/$name.err")"
+  fi
+}
+
+# the job NAME exited with CODE
+expect_rc() {
+  local name=$1 code=$2
+  [ "$rc" -eq "$code" ] ||
+    fail "$name: exit code $rc, expected $code; stderr: $(head -n 3 "$work/$name.err")"
+}
+
+# FILE contains the fixed string TEXT
+expect_text() {
+  local file=$1 text=$2
+  grep -qF -- "$text" "$file" || fail "$file does not contain '$text'; it has: $(head -n 3 "$file")"
+}
+
+# the digest line of job NAME
+digest_of() {
+  local line
+  line=$(grep '^digest ' "$work/$1.out" || true)
+  [ -n "$line" ] || fail "$1: no digest line; stderr: $(head -n 3 "$work/$1.err")"
+  echo "$line"
+}
+
+# jobs A and B have the same digest and individuals table minus the timing and rank columns
+expect_same_run() {
+  local a=$1 b=$2 da db
+  da=$(digest_of "$a")
+  db=$(digest_of "$b")
+  [ "$da" = "$db" ] || fail "$b: $db, expected $da as $a"
+  cut -f1-7 "$work/$a/individuals.tsv" > "$work/$a.cut"
+  cut -f1-7 "$work/$b/individuals.tsv" > "$work/$b.cut"
+  diff "$work/$a.cut" "$work/$b.cut" > "$work/$b.diff" ||
+    fail "$b: individuals table differs from $a's: $(head -n 4 "$work/$b.diff")"
+  local rows
+  rows=$(wc -l < "$work/$b.cut")
+  [ "$rows" -eq 65 ] || fail "$b: $rows lines in individuals.tsv, expected 65 (header + 4 x 16)"
+}
+
+# the output directory DIR holds nothing (or does not exist)
+expect_nothing_written() {
+  local dir=$1 left=""
+  [ -e "$dir" ] && left=$(find "$dir" -mindepth 1 | head -n 5)
+  [ -z "$left" ] || fail "$dir: files written although the run never started: $left"
+}
+
+# writes FILE: run.ini with `KEY = VALUE` in [SECTION] (replacing KEY there, adding the section)
+ini_with() {
+  local file=$1 section=$2 key=$3 value=$4
+  awk -v sec="[$section]" -v key="$key" -v val="$value" '
+    /^\[/ { if (in_sec && !done) { print key " = " val; done = 1 }; in_sec = ($0 == sec) }
+    in_sec && $1 == key { if (!done) print key " = " val; done = 1; next }
+    { print }
+    END { if (!done) { if (!in_sec) print sec; print key " = " val } }' "$work/run.ini" > "$file"
+}
+
+# the ids in "creature ID failed" lines of job NAME's stderr below BELOW, in the order logged
+failed_ids() {
+  sed -n 's/.*: creature \([0-9][0-9]*\) failed: .*/\1/p' "$work/$1.err" |
+    awk -v below="$2" '$1 < below' | tr '\n' ' '
+}
+
 case $mode in
   same_run)
-    "$cambrian" evolve --config "$work/run.ini" --out "$work/one" > "$work/one.txt"
-    mpirun_ "$cambrian" evolve --config "$work/run.ini" --out "$work/many" > "$work/many.txt"
-    a=$(grep '^digest ' "$work/one.txt"); b=$(grep '^digest ' "$work/many.txt")
-    echo "1 rank: $a   $np ranks: $b"
-    [ -n "$a" ] && [ "$a" = "$b" ]
-    cut -f1-7 "$work/one/individuals.tsv" > "$work/one.cut"
-    cut -f1-7 "$work/many/individuals.tsv" > "$work/many.cut"
-    diff "$work/one.cut" "$work/many.cut"
-    [ "$(wc -l < "$work/many.cut")" -eq 65 ]
-    # every worker rank took part (ranks 1..np-1 in column 9)
-    workers=$(cut -f9 "$work/many/individuals.tsv" | grep -v -e worker_rank -e '^-1$' | sort -u | wc -l)
-    [ "$workers" -eq $((np - 1)) ]
+    job one 1 --config "$work/run.ini" --out "$work/one"
+    expect_rc one 0
+    job many "$np" --config "$work/run.ini" --out "$work/many"
+    expect_rc many 0
+    echo "1 rank: $(digest_of one)   $np ranks: $(digest_of many)"
+    expect_same_run one many
+    # every worker rank took part (ranks 1..np-1 in column 9; elites carry -1)
+    workers=$(cut -f9 "$work/many/individuals.tsv" | grep -v -e worker_rank -e '^-1$' | sort -u |
+      tr '\n' ' ')
+    expected=$(seq 1 $((np - 1)) | tr '\n' ' ')
+    [ "$workers" = "$expected" ] || fail "worker ranks in the table: '$workers', expected '$expected'"
     ;;
+
   bad_config)
-    for bad in "--evolution.population 0" "--evolution.elite_fraction 1.2" \
-               "--physics.time_step=-0.01" "--evolution.graft_fraction 0.9" \
-               "--evolution.population many" "--evolution.no_such_key 1"; do
-      set +e
+    # one case: the job exits with CODE, one error line names every TEXT, nothing is written
+    bad_case() {
+      local name=$1 code=$2 args=$3
+      shift 3
+      rm -rf "${work:?}/${name:?}"
       # shellcheck disable=SC2086
-      mpirun_ "$cambrian" evolve --config "$work/run.ini" --out "$work/bad" $bad \
-        > "$work/bad.out" 2> "$work/bad.err"
-      rc=$?
-      set -e
-      echo "$bad -> exit $rc: $(grep -m1 error "$work/bad.err" || true)"
-      [ "$rc" -eq 3 ] || [ "$rc" -eq 2 ]
-      key=${bad%%[ =]*}; key=${key#--}
-      grep -q "${key}" "$work/bad.err"
-      [ ! -e "$work/bad/individuals.tsv" ]
-    done
-    # a bad key inside the file names the file
-    printf '[evolution]\npopulation = 0\n' > "$work/zero.ini"
-    set +e
-    mpirun_ "$cambrian" evolve --config "$work/zero.ini" > /dev/null 2> "$work/zero.err"
-    rc=$?
-    set -e
-    [ "$rc" -eq 3 ] && grep -q "zero.ini" "$work/zero.err" && grep -q "population = 0" "$work/zero.err"
+      job "$name" "$np" $args --out "$work/$name"
+      echo "$name: $args -> exit $rc: $(grep -m1 'error' "$work/$name.err" || true)"
+      expect_rc "$name" "$code"
+      local lines
+      lines=$(grep -c 'cambrian evolve.*error' "$work/$name.err" || true)
+      [ "$lines" -eq 1 ] || fail "$name: $lines error lines, expected one (rank 0's)"
+      for text in "$@"; do
+        expect_text "$work/$name.err" "$text"
+      done
+      expect_nothing_written "$work/$name"
+    }
+    base="--config $work/run.ini"
+    # a bad value on the command line is a config error (3), a command line that does not parse
+    # a usage error (2): docs/exit-codes.md and docs/parallel.md
+    bad_case cli_population 3 "$base --evolution.population 0" "evolution.population = 0"
+    bad_case cli_elite 3 "$base --evolution.elite_fraction 1.2" "evolution.elite_fraction = 1.2"
+    bad_case cli_time_step 3 "$base --physics.time_step=-0.01" "physics.time_step = -0.01"
+    bad_case cli_fractions 3 "$base --evolution.graft_fraction 0.9" \
+      "evolution.graft_fraction" "= 1.6: must sum to 1"
+    bad_case cli_dispatch 3 "$base --run.dispatch_order biggest" "run.dispatch_order = biggest"
+    bad_case cli_distribution 3 "$base --task.synthetic_distribution normal" \
+      "task.synthetic_distribution = normal"
+    bad_case cli_cv 3 "$base --task.synthetic_cv 5" "task.synthetic_cv = 5"
+    bad_case cli_type 2 "$base --evolution.population many" "evolution.population" "many"
+    bad_case cli_unknown 2 "$base --evolution.no_such_key 1" "evolution.no_such_key"
+    # a bad key or value inside the INI file is a config error that names the file
+    ini_with "$work/unknown_key.ini" evolution no_such_key 7
+    bad_case ini_unknown 3 "--config $work/unknown_key.ini" "$work/unknown_key.ini" \
+      "evolution.no_such_key"
+    ini_with "$work/wrong_type.ini" evolution population many
+    bad_case ini_type 3 "--config $work/wrong_type.ini" "$work/wrong_type.ini" \
+      "evolution.population" "many"
+    ini_with "$work/population_0.ini" evolution population 0
+    bad_case ini_population 3 "--config $work/population_0.ini" "$work/population_0.ini" \
+      "evolution.population = 0"
+    ini_with "$work/elite_1.2.ini" evolution elite_fraction 1.2
+    bad_case ini_elite 3 "--config $work/elite_1.2.ini" "$work/elite_1.2.ini" \
+      "evolution.elite_fraction = 1.2"
+    ini_with "$work/time_step.ini" physics time_step -0.01
+    bad_case ini_time_step 3 "--config $work/time_step.ini" "$work/time_step.ini" \
+      "physics.time_step = -0.01"
+    ini_with "$work/dispatch.ini" run dispatch_order biggest
+    bad_case ini_dispatch 3 "--config $work/dispatch.ini" "$work/dispatch.ini" \
+      "run.dispatch_order = biggest"
     ;;
+
   worker_failure)
-    mpirun_ "$cambrian" evolve --config "$work/run.ini" --out "$work/fail" --run.fail_every 5 \
-      > "$work/fail.out" 2> "$work/fail.err"
-    grep -q "creature 5 failed: injected failure" "$work/fail.err"
-    grep -q "rank [1-9][0-9]*: creature" "$work/fail.err"
+    job fail "$np" --config "$work/run.ini" --out "$work/fail" --run.fail_every 5
+    expect_rc fail 0
+    expect_text "$work/fail.err" "creature 5 failed: injected failure"
+    grep -q "rank [1-9][0-9]*: creature" "$work/fail.err" ||
+      fail "no 'rank R: creature' line naming a worker rank in $work/fail.err"
     # every evaluated creature with an id divisible by 5 failed, with fitness 0
     awk -F'\t' 'NR > 1 && $4 != "elite" && $2 % 5 == 0 {
                   n++; if ($6 != "failed" || $5 != 0) bad++ }
-                END { exit (n > 0 && bad == 0) ? 0 : 1 }' "$work/fail/individuals.tsv"
+                END { exit (n > 0 && bad == 0) ? 0 : 1 }' "$work/fail/individuals.tsv" ||
+      fail "creatures with ids divisible by 5 are not all failed with fitness 0"
     # and the others did not
     awk -F'\t' 'NR > 1 && $4 != "elite" && $2 % 5 != 0 && $6 != "ok" { bad++ }
-                END { exit bad ? 1 : 0 }' "$work/fail/individuals.tsv"
+                END { exit bad ? 1 : 0 }' "$work/fail/individuals.tsv" ||
+      fail "creatures with ids not divisible by 5 failed"
     ;;
+
+  output_failure)
+    # at the start: the output directory would lie below a regular file
+    printf 'not a directory\n' > "$work/plain_file"
+    job below_file "$np" --config "$work/run.ini" --out "$work/plain_file/run"
+    expect_rc below_file 5
+    expect_text "$work/below_file.err" "cambrian evolve: rank 0: $work/plain_file/run"
+    [ "$(cat "$work/plain_file")" = "not a directory" ] || fail "$work/plain_file was changed"
+    # at the end, while the workers wait for the next creature: the table cannot be written
+    mkdir -p "$work/tables/individuals.tsv"
+    job tables "$np" --config "$work/run.ini" --out "$work/tables"
+    expect_rc tables 5
+    expect_text "$work/tables.err" "cambrian evolve: rank 0: $work/tables/individuals.tsv"
+    ;;
+
+  worker_abort)
+    # the straight run, and the creature the worker will choke on: one bred in generation 2
+    job straight "$np" --config "$work/run.ini" --out "$work/straight"
+    expect_rc straight 0
+    victim=$(awk -F'\t' 'NR > 1 && $1 == 2 && $4 != "elite" { print $2; exit }' \
+      "$work/straight/individuals.tsv")
+    [ -n "$victim" ] || fail "no evaluated creature of generation 2 in the straight run"
+    # an unrecoverable error on the worker that receives it: exit 8, that rank named
+    job abort "$np" --config "$work/run.ini" --out "$work/abort" --run.test_worker_abort_at "$victim"
+    expect_rc abort 8
+    line=$(grep -m1 "injected unrecoverable error on receiving creature $victim " \
+      "$work/abort.err" || true)
+    [ -n "$line" ] || fail "no message about creature $victim: $(head -n 3 "$work/abort.err")"
+    rank=$(sed -n 's/^cambrian evolve: rank \([0-9][0-9]*\): .*/\1/p' <<< "$line")
+    { [ -n "$rank" ] && [ "$rank" -ge 1 ] && [ "$rank" -lt "$np" ]; } ||
+      fail "the message does not name a worker rank (1..$((np - 1))): $line"
+    # run-only: added on resuming a checkpoint it is no setting change (that would be exit 6)
+    job part "$np" --config "$work/run.ini" --out "$work/resumed" --evolution.generations 2 \
+      --run.checkpoint_every 1
+    expect_rc part 0
+    job resumed_abort "$np" --config "$work/run.ini" --out "$work/resumed" \
+      --run.checkpoint_every 1 --run.test_worker_abort_at "$victim"
+    expect_rc resumed_abort 8
+    expect_text "$work/resumed_abort.err" "creature $victim"
+    # and the aborted run continues from its last checkpoint to the straight run
+    job resumed "$np" --config "$work/run.ini" --out "$work/resumed"
+    expect_rc resumed 0
+    expect_same_run straight resumed
+    ;;
+
+  dispatch_order)
+    # the same results whatever the hand-out order
+    job largest "$np" --config "$work/run.ini" --out "$work/largest"
+    expect_rc largest 0
+    for order in shuffled smallest_first; do
+      job "$order" "$np" --config "$work/run.ini" --out "$work/$order" --run.dispatch_order "$order"
+      expect_rc "$order" 0
+      expect_same_run largest "$order"
+    done
+    job seeded "$np" --config "$work/run.ini" --out "$work/seeded" --run.dispatch_order shuffled \
+      --run.dispatch_seed 99
+    expect_rc seeded 0
+    expect_same_run largest seeded
+    # run-only: a resume may change the order
+    job part "$np" --config "$work/run.ini" --out "$work/changed" --evolution.generations 2 \
+      --run.checkpoint_every 1 --run.dispatch_order shuffled
+    expect_rc part 0
+    job changed "$np" --config "$work/run.ini" --out "$work/changed" \
+      --run.dispatch_order smallest_first
+    expect_rc changed 0
+    expect_same_run largest changed
+    # the order reaches the scheduler: one worker logs generation 0's creatures as handed out
+    declare -A sequence
+    for order in largest_first shuffled smallest_first; do
+      job "log_$order" 2 --config "$work/run.ini" --out "$work/log_$order" \
+        --evolution.generations 1 --run.fail_every 1 --run.dispatch_order "$order"
+      expect_rc "log_$order" 0
+      sequence[$order]=$(failed_ids "log_$order" 16)
+      sorted=$(tr ' ' '\n' <<< "${sequence[$order]}" | sed '/^$/d' | sort -n | tr '\n' ' ')
+      [ "$sorted" = "$(seq 0 15 | tr '\n' ' ')" ] ||
+        fail "$order: generation 0 evaluated as '${sequence[$order]}', not ids 0..15 once each"
+      echo "$order: ${sequence[$order]}"
+    done
+    [ "${sequence[largest_first]}" != "${sequence[smallest_first]}" ] ||
+      fail "smallest_first handed out in the largest_first order"
+    [ "${sequence[shuffled]}" != "${sequence[largest_first]}" ] ||
+      fail "shuffled handed out in the largest_first order"
+    [ "${sequence[shuffled]}" != "${sequence[smallest_first]}" ] ||
+      fail "shuffled handed out in the smallest_first order"
+    ;;
+
   rank0_idle)
-    mpirun_ "$cambrian" evolve --config "$work/run.ini" --out "$work/idle" \
+    job idle "$np" --config "$work/run.ini" --out "$work/idle" \
       --task.synthetic_cost_us 20000 --task.synthetic_cost_per_gene_us 0 \
-      --evolution.population 24 --evolution.generations 3 > "$work/idle.txt"
-    cpu=$(awk '$1 == "rank0_cpu_seconds" { print $2 }' "$work/idle.txt")
-    wall=$(awk '$1 == "wall_seconds" { print $2 }' "$work/idle.txt")
+      --evolution.population 24 --evolution.generations 3
+    expect_rc idle 0
+    cpu=$(awk '$1 == "rank0_cpu_seconds" { print $2 }' "$work/idle.out")
+    wall=$(awk '$1 == "wall_seconds" { print $2 }' "$work/idle.out")
     echo "rank 0 cpu $cpu s of $wall s wall"
-    awk -v cpu="$cpu" -v wall="$wall" 'BEGIN { exit (wall > 0 && cpu < 0.25 * wall) ? 0 : 1 }'
+    awk -v cpu="$cpu" -v wall="$wall" 'BEGIN { exit (wall > 0 && cpu < 0.25 * wall) ? 0 : 1 }' ||
+      fail "rank 0 used $cpu s of CPU in $wall s of wall time (at most a quarter expected)"
     ;;
+
   *)
     echo "unknown mode $mode" >&2
     exit 2
