@@ -68,6 +68,14 @@ struct TaskSettings {
   double settle_time = 0.5;     ///< s, brain off before the trial (Chaumont)
   double trial_time = 1.0;      ///< s, brain on, not measured (Chaumont)
   double resettle_time = 0.5;   ///< s, brain off again before measuring
+  /// Chaumont et al. 3.3's rest rule: each settle phase (brain off) lasts until every part has
+  /// moved slower than `rest_speed` for `rest_time` in a row (and at least its settle_time or
+  /// resettle_time); a creature not at rest within `settle_max_time` ends `unstable`. Off: the
+  /// settle phases last exactly settle_time and resettle_time.
+  bool rest_check = false;
+  double rest_speed = 0.2;       ///< m/s, fastest part centre of mass at rest (1/300 m per 1/60 s)
+  double rest_time = 0.5;        ///< s of consecutive steps at rest
+  double settle_max_time = 5.0;  ///< s, the longest a settle phase may last with rest_check
   WalkNormalisation normalisation = WalkNormalisation::none;
   double chaumont_k = 1.02;  ///< k in k^N
   Vec3 target{10, 0, 0};     ///< photosensor target, metres

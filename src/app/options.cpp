@@ -2,6 +2,7 @@
 
 #include "cambrian/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -113,6 +114,16 @@ po::options_description creatureOptions(CreatureSettings& s) {
       "brain on, unmeasured, s")(
       "task.resettle_time", po::value(&s.task.resettle_time)->default_value(s.task.resettle_time),
       "brain off again before measuring, s")(
+      "task.rest_check", po::value(&s.task.rest_check)->default_value(s.task.rest_check),
+      "Chaumont's rest rule: each settle phase lasts until the body is at rest (at least "
+      "task.settle_time / task.resettle_time); no rest within task.settle_max_time: unstable")(
+      "task.rest_speed", po::value(&s.task.rest_speed)->default_value(s.task.rest_speed),
+      "rest check: largest speed of any part's centre of mass counted as rest, m/s")(
+      "task.rest_time", po::value(&s.task.rest_time)->default_value(s.task.rest_time),
+      "rest check: how long the body must stay at rest, s")(
+      "task.settle_max_time",
+      po::value(&s.task.settle_max_time)->default_value(s.task.settle_max_time),
+      "rest check: the longest a settle phase may last, s")(
       "task.normalisation", po::value(&s.normalisation_name)->default_value(s.normalisation_name),
       "walk fitness: none | chaumont | volume")(
       "task.chaumont_k", po::value(&s.task.chaumont_k)->default_value(s.task.chaumont_k),
@@ -216,6 +227,19 @@ void finishCreatureSettings(CreatureSettings& s) {
   require(t.settle_time >= 0, "task.settle_time", t.settle_time, "must be >= 0");
   require(t.trial_time >= 0, "task.trial_time", t.trial_time, "must be >= 0");
   require(t.resettle_time >= 0, "task.resettle_time", t.resettle_time, "must be >= 0");
+  require(t.rest_speed > 0 && std::isfinite(t.rest_speed), "task.rest_speed", t.rest_speed,
+          "must be > 0 m/s");
+  require(t.rest_time >= 0 && t.rest_time <= 3600, "task.rest_time", t.rest_time,
+          "must be in [0, 3600] s");
+  require(t.settle_max_time >= 0 && t.settle_max_time <= 3600, "task.settle_max_time",
+          t.settle_max_time, "must be in [0, 3600] s");
+  // with the rest check on, a settle phase must have room for its minimum and for the rest
+  if (t.rest_check) {
+    require(t.settle_max_time >= std::max({t.settle_time, t.resettle_time, t.rest_time}),
+            "task.settle_max_time", t.settle_max_time,
+            "must be >= task.settle_time, task.resettle_time and task.rest_time when "
+            "task.rest_check is on");
+  }
   require(t.chaumont_k > 0, "task.chaumont_k", t.chaumont_k, "must be > 0");
   require(t.synthetic_cost_us >= 0, "task.synthetic_cost_us", t.synthetic_cost_us, "must be >= 0");
   require(t.synthetic_cost_per_gene_us >= 0, "task.synthetic_cost_per_gene_us",

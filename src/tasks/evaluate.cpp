@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <sstream>
 #include <vector>
 
 namespace cambrian {
@@ -42,13 +43,64 @@ struct Watch {
   }
 };
 
-// runs `steps` steps; false when a rule broke or the wall-clock bound passed
-bool runPhase(Simulation& simulation, std::uint64_t steps, bool brain_on, Jury* jury,
-              Clock::time_point deadline, bool bounded, EvalPhase phase, Watch* watch) {
-  for (std::uint64_t s = 0; s < steps; ++s) {
+// Chaumont et al.'s rest rule over a settle phase: the creature is at rest once every part's
+// centre of mass has moved slower than `speed` for `steps_needed` consecutive steps
+class RestCheck {
+ public:
+  RestCheck(double speed, std::uint64_t steps_needed, double time_step)
+      : speed_(speed), steps_needed_(steps_needed), time_step_(time_step) {}
+
+  // a new phase: rest counts from its first step
+  void begin(const Simulation& simulation) {
+    simulation.partPoses(poses_);
+    previous_.resize(poses_.size());
+    for (std::size_t i = 0; i < poses_.size(); ++i)
+      previous_[i] = poses_[i].position;
+    run_ = 0;
+    longest_run_ = 0;
+  }
+
+  // after each step: the fastest part's speed, and whether the rest has lasted long enough
+  bool observe(const Simulation& simulation) {
+    simulation.partPoses(poses_);
+    fastest_ = 0;
+    for (std::size_t i = 0; i < poses_.size(); ++i) {
+      fastest_ = std::max(fastest_, norm(poses_[i].position - previous_[i]) / time_step_);
+      previous_[i] = poses_[i].position;
+    }
+    run_ = fastest_ <= speed_ ? run_ + 1 : 0;
+    longest_run_ = std::max(longest_run_, run_);
+    return run_ >= steps_needed_;
+  }
+
+  double fastest() const { return fastest_; }
+  std::uint64_t longestRun() const { return longest_run_; }
+
+ private:
+  double speed_;
+  std::uint64_t steps_needed_;
+  double time_step_;
+  std::vector<Transform> poses_;
+  std::vector<Vec3> previous_;
+  std::uint64_t run_ = 0, longest_run_ = 0;
+  double fastest_ = 0;
+};
+
+// how a phase ended
+enum class PhaseEnd { done, stopped, unstable };
+
+// runs `steps` steps, or, with a rest check, at least `steps` and until the creature is at rest
+// (at most `max_steps`); stopped when a rule broke or the wall-clock bound passed
+PhaseEnd runPhase(Simulation& simulation, std::uint64_t steps, bool brain_on, Jury* jury,
+                  Clock::time_point deadline, bool bounded, EvalPhase phase, Watch* watch,
+                  RestCheck* rest = nullptr, std::uint64_t max_steps = 0) {
+  if (rest)
+    rest->begin(simulation);
+  const std::uint64_t last = rest ? std::max(steps, max_steps) : steps;
+  for (std::uint64_t s = 0; s < last; ++s) {
     simulation.step(brain_on);
     if (simulation.status() != EvalStatus::ok)
-      return false;
+      return PhaseEnd::stopped;
     if (jury)
       jury->observe(simulation);
     // a frame for the observer, if any (it only reads)
@@ -56,9 +108,12 @@ bool runPhase(Simulation& simulation, std::uint64_t steps, bool brain_on, Jury* 
       watch->show(simulation, phase);
     // wall-clock bound, looked at every 256 steps
     if (bounded && (simulation.steps() & 255) == 0 && Clock::now() > deadline)
-      return false;
+      return PhaseEnd::stopped;
+    // a settle phase with the rest check ends once the body has rested long enough
+    if (rest && rest->observe(simulation) && s + 1 >= steps)
+      return PhaseEnd::done;
   }
-  return true;
+  return rest ? PhaseEnd::unstable : PhaseEnd::done;
 }
 
 // the failure outcome for a broken rule
@@ -110,15 +165,32 @@ Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task, const Physi
     return finish(outcome);
 
   // Chaumont's start-up: settle brain off, trial brain on, settle again (walk);
-  // jump: settle only
+  // jump: settle only. With the rest check a settle phase lasts until the body is at rest
   const double dt = physics.time_step;
-  bool alive = runPhase(simulation, stepsIn(task.settle_time, dt), false, nullptr, deadline,
-                        bounded, EvalPhase::settle, watch);
+  RestCheck rest_check(task.rest_speed, stepsIn(task.rest_time, dt), dt);
+  RestCheck* rest = task.rest_check ? &rest_check : nullptr;
+  const std::uint64_t settle_max = stepsIn(task.settle_max_time, dt);
+  auto settle = [&](double seconds, EvalPhase phase) {
+    PhaseEnd end = runPhase(simulation, stepsIn(seconds, dt), false, nullptr, deadline, bounded,
+                            phase, watch, rest, settle_max);
+    if (end == PhaseEnd::unstable) {
+      std::ostringstream message;
+      message << "not at rest within task.settle_max_time = " << task.settle_max_time
+              << " s in the " << phaseName(phase) << " phase: no " << task.rest_time
+              << " s (task.rest_time) with every part slower than task.rest_speed = "
+              << task.rest_speed << " m/s (longest rest " << rest->longestRun() * dt
+              << " s; fastest part at the end " << rest->fastest() << " m/s)";
+      outcome.status = EvalStatus::unstable;
+      outcome.message = message.str();
+      outcome.fitness = kWorstFitness;
+    }
+    return end == PhaseEnd::done;
+  };
+  bool alive = settle(task.settle_time, EvalPhase::settle);
   if (alive && task.kind == TaskKind::walk) {
     alive = runPhase(simulation, stepsIn(task.trial_time, dt), true, nullptr, deadline, bounded,
-                     EvalPhase::trial, watch) &&
-            runPhase(simulation, stepsIn(task.resettle_time, dt), false, nullptr, deadline, bounded,
-                     EvalPhase::resettle, watch);
+                     EvalPhase::trial, watch) == PhaseEnd::done &&
+            settle(task.resettle_time, EvalPhase::resettle);
   }
   if (!alive)
     return finish(outcome);
@@ -129,7 +201,7 @@ Outcome evaluateBody(const BodyPlan& plan, const TaskSettings& task, const Physi
   Jury* jury = task.kind == TaskKind::walk ? static_cast<Jury*>(&distance) : &height;
   jury->begin(simulation);
   alive = runPhase(simulation, stepsIn(task.evaluation_time, dt), true, jury, deadline, bounded,
-                   EvalPhase::measure, watch);
+                   EvalPhase::measure, watch) == PhaseEnd::done;
   if (!alive)
     return finish(outcome);
 

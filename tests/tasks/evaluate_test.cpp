@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace cambrian {
 namespace {
@@ -195,6 +197,167 @@ TEST(Evaluate, NoSelfContactsDenyTheContactPump) {
   EXPECT_LT(without.measure("distance"), 1.0);
   // the fixture still is what it claims to be
   EXPECT_GT(with_contacts.measure("distance"), 20.0);
+}
+
+//---------------------------------------------------------------- the rest check
+
+// a pendulum: a heavy 0.6 m arm on a free hinge at the top of a 1 m tower on a wide, heavy
+// base, born horizontal; with the default joint damping it swings for minutes
+Genome pendulum() {
+  return parseGenomeText(R"(cambrian-genome 2
+node 0 size 1.2 1.2 0.1 density 3000 joint rigid
+node 1 size 1.0 0.1 0.1 density 500 joint rigid
+node 2 size 0.6 0.1 0.1 density 3000 joint revolute limit 3.1 3.1 3.1
+connection 0 -> 1 position 0 0 1
+connection 1 -> 2 position 1 0 0 orientation 0 1.5708 0
+end
+)",
+                         "pendulum");
+}
+
+// the rest check on, with the default threshold, time and cap
+TaskSettings withRestCheck(TaskSettings task) {
+  task.rest_check = true;
+  return task;
+}
+
+// every frame's phase and part positions (stride 1)
+class PhaseRecorder : public FrameObserver {
+ public:
+  std::uint64_t frameStride() const override { return 1; }
+  void begin(const BodyPlan&, const PhysicsSettings&) override {}
+  void frame(const EvalFrame& frame) override {
+    phases.push_back(frame.phase);
+    positions.emplace_back();
+    for (const Transform& pose : frame.poses)
+      positions.back().push_back(pose.position);
+  }
+  // steps taken in `phase`
+  std::uint64_t stepsIn(EvalPhase phase) const {
+    return static_cast<std::uint64_t>(std::count(phases.begin() + 1, phases.end(), phase));
+  }
+  // the fastest part's speed over step s (frames s-1 to s), m/s
+  double fastest(std::size_t s, double dt) const {
+    double speed = 0;
+    for (std::size_t i = 0; i < positions[s].size(); ++i)
+      speed = std::max(speed, norm(positions[s][i] - positions[s - 1][i]) / dt);
+    return speed;
+  }
+  std::vector<EvalPhase> phases;  // frame 0 is the birth
+  std::vector<std::vector<Vec3>> positions;
+};
+
+// the rule is off by default, and the default results do not depend on its other settings
+TEST(Evaluate, RestCheckIsOffByDefault) {
+  EXPECT_FALSE(TaskSettings{}.rest_check);
+  Outcome swinging = evaluate(pendulum(), GenomeLimits{}, shortWalk(), PhysicsSettings{});
+  ASSERT_EQ(swinging.status, EvalStatus::ok) << swinging.message;
+  TaskSettings other = shortWalk();
+  other.rest_speed = 1e-9;
+  other.settle_max_time = 0.5;
+  Outcome same = evaluate(pendulum(), GenomeLimits{}, other, PhysicsSettings{});
+  EXPECT_TRUE(bitIdentical(same.fitness, swinging.fitness));
+  EXPECT_EQ(same.steps, swinging.steps);
+}
+
+// a block born at rest: with the check on, walk and jump give the same bits and the same
+// steps as without (its settle phases are as long as settle_time and resettle_time)
+TEST(Evaluate, RestCheckLeavesABlockAtRestAlone) {
+  Genome block = readGenomeFile(kCreatures + "single_block.genome");
+  for (TaskKind kind : {TaskKind::walk, TaskKind::jump}) {
+    TaskSettings task = shortWalk();
+    task.kind = kind;
+    Outcome off = evaluate(block, GenomeLimits{}, task, PhysicsSettings{});
+    Outcome on = evaluate(block, GenomeLimits{}, withRestCheck(task), PhysicsSettings{});
+    ASSERT_EQ(on.status, EvalStatus::ok) << on.message;
+    EXPECT_EQ(on.steps, off.steps) << taskName(kind);
+    EXPECT_GT(on.steps, 0u);
+    EXPECT_TRUE(bitIdentical(on.fitness, off.fitness)) << taskName(kind);
+    EXPECT_EQ(on.measures, off.measures) << taskName(kind);
+  }
+}
+
+// a settle phase shorter than rest_time lasts rest_time: the block rests from its first step
+TEST(Evaluate, RestCheckSettleLastsAtLeastTheRestTime) {
+  Genome block = readGenomeFile(kCreatures + "single_block.genome");
+  TaskSettings task = shortWalk();
+  task.kind = TaskKind::jump;
+  task.settle_time = 0.1;
+  PhysicsSettings physics;
+  Outcome off = evaluate(block, GenomeLimits{}, task, physics);
+  Outcome on = evaluate(block, GenomeLimits{}, withRestCheck(task), physics);
+  ASSERT_EQ(on.status, EvalStatus::ok) << on.message;
+  const auto steps = [&](double seconds) {
+    return static_cast<std::uint64_t>(std::llround(seconds / physics.time_step));
+  };
+  EXPECT_EQ(on.steps - off.steps, steps(task.rest_time) - steps(task.settle_time));
+}
+
+// a freely swinging arm never rests: unstable with the worst fitness once settle_max_time has
+// passed in the first settle phase, in walk and jump; without the check it is evaluated
+TEST(Evaluate, RestCheckFindsACreatureThatNeverRests) {
+  for (TaskKind kind : {TaskKind::walk, TaskKind::jump}) {
+    TaskSettings task = shortWalk();
+    task.kind = kind;
+    Outcome off = evaluate(pendulum(), GenomeLimits{}, task, PhysicsSettings{});
+    ASSERT_EQ(off.status, EvalStatus::ok) << off.message;
+    Outcome on = evaluate(pendulum(), GenomeLimits{}, withRestCheck(task), PhysicsSettings{});
+    EXPECT_EQ(on.status, EvalStatus::unstable) << taskName(kind) << ": " << on.message;
+    EXPECT_EQ(on.fitness, kWorstFitness);
+    EXPECT_TRUE(on.measures.empty());
+    EXPECT_EQ(on.steps, static_cast<std::uint64_t>(
+                            std::llround(task.settle_max_time / PhysicsSettings{}.time_step)));
+    EXPECT_NE(on.message.find("task.settle_max_time"), std::string::npos) << on.message;
+    EXPECT_NE(on.message.find("settle phase"), std::string::npos) << on.message;
+  }
+}
+
+// the same arm with heavy joint damping comes to rest: each settle phase ends at the first step,
+// past its minimum, that closes rest_time of steps in which no part moved faster than
+// rest_speed (checked on the recorded frames), and the run is deterministic
+TEST(Evaluate, RestCheckSettlesUntilAtRest) {
+  PhysicsSettings physics;
+  physics.joint_damping = 5;
+  const double dt = physics.time_step;
+  const TaskSettings task = withRestCheck(shortWalk());
+  const std::uint64_t rest_steps = std::llround(task.rest_time / dt);
+  PhaseRecorder frames;
+  Outcome on = evaluate(pendulum(), GenomeLimits{}, task, physics, 0, &frames);
+  ASSERT_EQ(on.status, EvalStatus::ok) << on.message;
+  Outcome again = evaluate(pendulum(), GenomeLimits{}, task, physics);
+  EXPECT_EQ(again.steps, on.steps);
+  EXPECT_TRUE(bitIdentical(again.fitness, on.fitness));
+  ASSERT_EQ(frames.phases.size(), on.steps + 1);
+
+  // the swinging arm made the first settle phase longer than settle_time
+  const std::uint64_t settle = frames.stepsIn(EvalPhase::settle);
+  const std::uint64_t resettle = frames.stepsIn(EvalPhase::resettle);
+  EXPECT_GT(settle, std::llround(task.settle_time / dt) + rest_steps);
+  EXPECT_EQ(frames.stepsIn(EvalPhase::trial), std::llround(task.trial_time / dt));
+  EXPECT_EQ(frames.stepsIn(EvalPhase::measure), std::llround(task.evaluation_time / dt));
+
+  // each settle phase ends exactly when the rule first holds after its minimum
+  std::size_t first = 1;
+  for (auto [length, minimum] : {std::pair{settle, std::llround(task.settle_time / dt)},
+                                 std::pair{resettle, std::llround(task.resettle_time / dt)}}) {
+    std::uint64_t run = 0;
+    std::uint64_t ended = 0;
+    for (std::size_t s = first; s < frames.phases.size() && ended == 0; ++s) {
+      run = frames.fastest(s, dt) <= task.rest_speed ? run + 1 : 0;
+      if (run >= rest_steps && s - first + 1 >= static_cast<std::uint64_t>(minimum))
+        ended = s - first + 1;
+    }
+    EXPECT_EQ(length, ended);
+    first += length + (first == 1 ? frames.stepsIn(EvalPhase::trial) : 0);
+  }
+
+  // the check off: settle phases of exactly settle_time and resettle_time
+  TaskSettings off_task = task;
+  off_task.rest_check = false;
+  Outcome off = evaluate(pendulum(), GenomeLimits{}, off_task, physics);
+  ASSERT_EQ(off.status, EvalStatus::ok) << off.message;
+  EXPECT_EQ(on.steps - off.steps, settle + resettle - std::llround(task.settle_time / dt) -
+                                      std::llround(task.resettle_time / dt));
 }
 
 }  // namespace
