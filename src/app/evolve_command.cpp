@@ -31,6 +31,7 @@ struct EvolveSettings {
   RunSettings run;
   std::string selection_name = "truncation";
   std::vector<std::string> seed_genomes;
+  SeedValue seed;
   std::uint64_t fail_every = 0;
   std::uint64_t test_worker_abort_at = 0;
   std::string dispatch_order_name = "largest_first";
@@ -103,8 +104,9 @@ po::options_description evolutionOptions(EvolveSettings& s) {
       "genome files the first generation starts from (repeat the key or separate by spaces)");
 
   po::options_description run("[run] this run");
-  run.add_options()("run.seed", po::value(&e.seed)->default_value(e.seed),
-                    "run seed (same seed, same run)")(
+  s.seed.value = e.seed;
+  run.add_options()("run.seed", po::value(&s.seed)->default_value(s.seed),
+                    "run seed, 0..2^64-1 (same seed, same run)")(
       "run.out", po::value(&s.run.out_dir)->default_value(s.run.out_dir),
       "output directory (history.h5, individuals.tsv, generations.tsv)")(
       "run.quiet", po::value(&s.run.quiet)->default_value(s.run.quiet),
@@ -193,6 +195,8 @@ std::string valueText(const boost::any& value) {
     return std::to_string(*v);
   if (const auto* v = boost::any_cast<unsigned long long>(&value))
     return std::to_string(*v);
+  if (const auto* v = boost::any_cast<SeedValue>(&value))
+    return std::to_string(v->value);
   if (const auto* v = boost::any_cast<std::vector<std::string>>(&value)) {
     std::string text;
     for (const std::string& item : *v)
@@ -236,7 +240,7 @@ Setup parse(int argc, char** argv, bool read_seeds) {
   po::options_description settings;
   settings.add(creatureOptions(s.creature)).add(evolutionOptions(s));
   std::string config_path;
-  std::uint64_t seed = 0;
+  SeedValue seed;
   std::string out;
   bool quiet = false, verbose = false, fresh = false, help_markdown = false;
   double max_hours = 0;
@@ -253,12 +257,8 @@ Setup parse(int argc, char** argv, bool read_seeds) {
       "fresh", po::bool_switch(&fresh),
       "start over even when DIR holds a checkpoint (removes it, overwrites history.h5)");
 
-  po::variables_map vm;
-  try {
-    vm = parseOptions(argc, argv, cli, settings, nullptr, "config");
-  } catch (const ConfigError& e) {
-    throw;
-  }
+  OptionOrigins origins;
+  po::variables_map vm = parseOptions(argc, argv, cli, settings, nullptr, "config", &origins);
   if (help_markdown) {
     setup.help = true;
     setup.help_text = optionsMarkdown(settings);
@@ -281,28 +281,43 @@ Setup parse(int argc, char** argv, bool read_seeds) {
          << "(use SIGUSR1 under mpirun) and --max-hours stop cleanly after a generation with a\n"
          << "checkpoint and exit 0. Details in docs/checkpoints.md.\n\n"
          << cli << "\n"
-         << settings;
+         << optionsHelp(settings);
     setup.help = true;
     setup.help_text = text.str();
     return setup;
   }
 
-  // short forms win over the long keys
-  if (vm.count("seed"))
-    s.evolution.seed = seed;
-  if (vm.count("out"))
+  // short forms win over the long keys, in the settings and in the stored settings text
+  auto shortForm = [&](const char* key, const boost::any& value) {
+    vm.at(key).value() = value;
+    origins.command_line.insert(key);
+    origins.config_file.erase(key);
+  };
+  if (vm.count("seed")) {
+    s.seed = seed;
+    shortForm("run.seed", seed);
+  }
+  if (vm.count("out")) {
     s.run.out_dir = out;
-  if (quiet)
+    shortForm("run.out", out);
+  }
+  if (quiet) {
     s.run.quiet = true;
-  if (verbose)
+    shortForm("run.quiet", true);
+  }
+  if (verbose) {
     s.run.verbose = true;
-  if (vm.count("max-hours"))
+    shortForm("run.verbose", true);
+  }
+  if (vm.count("max-hours")) {
     s.run.max_hours = max_hours;
+    shortForm("run.max_hours", max_hours);
+  }
+  s.evolution.seed = s.seed.value;
   s.run.fresh = fresh;
   s.run.config_text = configText(settings, vm);
 
-  // words to enums and range checks, naming the file
-  std::string where = config_path.empty() ? "" : config_path + ": ";
+  // words to enums and range checks, naming the file or the command line the value came from
   try {
     finishCreatureSettings(s.creature);
     s.evolution.selection.method = selectionMethodFromName(s.selection_name);
@@ -311,7 +326,7 @@ Setup parse(int argc, char** argv, bool read_seeds) {
     checkRunSettings(s.run);
     s.dispatch.order = dispatchOrderFromName(s.dispatch_order_name);
   } catch (const ConfigError& e) {
-    throw ConfigError(where + e.what());
+    throw ConfigError(locateSettingError(e.what(), origins));
   }
 
   // seed genomes (rank 0 only), checked against the limits

@@ -3,6 +3,7 @@
 #include "cambrian/error.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -191,9 +192,10 @@ void finishCreatureSettings(CreatureSettings& s) {
           "genome.max_neurons_per_node", g.max_neurons_per_node, "must be in 0..64");
   require(g.max_brain_neurons >= 0 && g.max_brain_neurons <= 256, "genome.max_brain_neurons",
           g.max_brain_neurons, "must be in 0..256");
-  require(g.min_part_size > 0, "genome.min_part_size", g.min_part_size, "must be > 0");
-  require(g.max_part_size >= g.min_part_size, "genome.max_part_size", g.max_part_size,
-          "must be >= genome.min_part_size");
+  require(g.min_part_size > 0 && std::isfinite(g.min_part_size), "genome.min_part_size",
+          g.min_part_size, "must be > 0 and finite");
+  require(g.max_part_size >= g.min_part_size && std::isfinite(g.max_part_size),
+          "genome.max_part_size", g.max_part_size, "must be >= genome.min_part_size and finite");
 
   // physics
   const PhysicsSettings& p = s.physics;
@@ -214,19 +216,25 @@ void finishCreatureSettings(CreatureSettings& s) {
           "must be > 0");
   require(p.solver_iterations >= 1 && p.solver_iterations <= 1000, "physics.solver_iterations",
           p.solver_iterations, "must be in 1..1000");
-  require(p.max_speed > 0, "physics.max_speed", p.max_speed, "must be > 0");
-  require(p.max_displacement > 0, "physics.max_displacement", p.max_displacement, "must be > 0");
-  require(p.penetration_tolerance >= 0, "physics.penetration_tolerance", p.penetration_tolerance,
-          "must be >= 0");
-  require(p.max_wall_seconds >= 0, "physics.max_wall_seconds", p.max_wall_seconds, "must be >= 0");
+  require(p.max_speed > 0 && std::isfinite(p.max_speed), "physics.max_speed", p.max_speed,
+          "must be > 0 and finite");
+  require(p.max_displacement > 0 && std::isfinite(p.max_displacement), "physics.max_displacement",
+          p.max_displacement, "must be > 0 and finite");
+  require(p.penetration_tolerance >= 0 && std::isfinite(p.penetration_tolerance),
+          "physics.penetration_tolerance", p.penetration_tolerance, "must be >= 0 and finite");
+  require(p.max_wall_seconds >= 0 && std::isfinite(p.max_wall_seconds), "physics.max_wall_seconds",
+          p.max_wall_seconds, "must be >= 0 and finite (0 = no bound)");
 
   // task
   const TaskSettings& t = s.task;
   require(t.evaluation_time > 0 && t.evaluation_time <= 3600, "task.evaluation_time",
           t.evaluation_time, "must be in (0, 3600] s");
-  require(t.settle_time >= 0, "task.settle_time", t.settle_time, "must be >= 0");
-  require(t.trial_time >= 0, "task.trial_time", t.trial_time, "must be >= 0");
-  require(t.resettle_time >= 0, "task.resettle_time", t.resettle_time, "must be >= 0");
+  require(t.settle_time >= 0 && t.settle_time <= 3600, "task.settle_time", t.settle_time,
+          "must be in [0, 3600] s");
+  require(t.trial_time >= 0 && t.trial_time <= 3600, "task.trial_time", t.trial_time,
+          "must be in [0, 3600] s");
+  require(t.resettle_time >= 0 && t.resettle_time <= 3600, "task.resettle_time", t.resettle_time,
+          "must be in [0, 3600] s");
   require(t.rest_speed > 0 && std::isfinite(t.rest_speed), "task.rest_speed", t.rest_speed,
           "must be > 0 m/s");
   require(t.rest_time >= 0 && t.rest_time <= 3600, "task.rest_time", t.rest_time,
@@ -240,10 +248,13 @@ void finishCreatureSettings(CreatureSettings& s) {
             "must be >= task.settle_time, task.resettle_time and task.rest_time when "
             "task.rest_check is on");
   }
-  require(t.chaumont_k > 0, "task.chaumont_k", t.chaumont_k, "must be > 0");
-  require(t.synthetic_cost_us >= 0, "task.synthetic_cost_us", t.synthetic_cost_us, "must be >= 0");
-  require(t.synthetic_cost_per_gene_us >= 0, "task.synthetic_cost_per_gene_us",
-          t.synthetic_cost_per_gene_us, "must be >= 0");
+  require(t.chaumont_k > 0 && std::isfinite(t.chaumont_k), "task.chaumont_k", t.chaumont_k,
+          "must be > 0 and finite");
+  require(t.synthetic_cost_us >= 0 && t.synthetic_cost_us <= 3.6e9, "task.synthetic_cost_us",
+          t.synthetic_cost_us, "must be in [0, 3.6e9] us");
+  require(t.synthetic_cost_per_gene_us >= 0 && t.synthetic_cost_per_gene_us <= 3.6e9,
+          "task.synthetic_cost_per_gene_us", t.synthetic_cost_per_gene_us,
+          "must be in [0, 3.6e9] us");
   require(t.synthetic_noise >= 0 && t.synthetic_noise <= 1, "task.synthetic_noise",
           t.synthetic_noise, "must be in [0, 1]");
   require(t.synthetic_cv >= 0 && t.synthetic_cv <= 4, "task.synthetic_cv", t.synthetic_cv,
@@ -264,10 +275,20 @@ po::variables_map parseOptions(int argc, const char* const* argv,
                                const po::options_description& cli_only,
                                const po::options_description& settings,
                                const po::positional_options_description* positional,
-                               const std::string& config_key) {
+                               const std::string& config_key, OptionOrigins* origins) {
   po::options_description all;
   all.add(cli_only).add(settings);
   po::variables_map vm;
+
+  // the keys of `vm` given explicitly (not defaults)
+  auto givenKeys = [&vm]() {
+    std::set<std::string> keys;
+    for (const auto& [key, value] : vm) {
+      if (!value.defaulted())
+        keys.insert(key);
+    }
+    return keys;
+  };
 
   // command line first: it wins over the file
   try {
@@ -279,10 +300,12 @@ po::variables_map parseOptions(int argc, const char* const* argv,
   } catch (const po::error& e) {
     throw Error(ExitCode::usage, e.what());
   }
+  std::set<std::string> command_line = givenKeys();
 
   // then the INI file, when one is named
+  std::string path;
   if (!config_key.empty() && vm.count(config_key)) {
-    std::string path = vm[config_key].as<std::string>();
+    path = vm[config_key].as<std::string>();
     std::ifstream file(path);
     if (!file)
       throw ConfigError(path + ": cannot open the config file");
@@ -292,20 +315,59 @@ po::variables_map parseOptions(int argc, const char* const* argv,
       throw ConfigError(path + ": " + e.what());
     }
   }
+  if (origins) {
+    origins->command_line = command_line;
+    origins->config_file.clear();
+    for (const std::string& key : givenKeys()) {
+      if (!command_line.count(key))
+        origins->config_file.insert(key);
+    }
+    origins->config_path = path;
+  }
 
-  // bind values to variables
+  // bind values to variables (a value that does not convert is named with its origin)
   try {
     po::notify(vm);
   } catch (const po::error& e) {
-    throw ConfigError(e.what());
+    std::string message = e.what();
+    if (!path.empty() && origins) {
+      for (const std::string& key : origins->config_file) {
+        if (message.find("'" + key + "'") != std::string::npos)
+          throw ConfigError(path + ": " + message);
+      }
+    }
+    throw ConfigError(message);
   }
   return vm;
 }
 
+std::string locateSettingError(const std::string& message, const OptionOrigins& origins) {
+  std::string key = message.substr(0, message.find(" = "));
+  if (origins.config_file.count(key) && !origins.config_path.empty())
+    return origins.config_path + ": " + message;
+  if (origins.command_line.count(key))
+    return "command line: --" + message;
+  return message;
+}
+
+std::ostream& operator<<(std::ostream& out, const SeedValue& seed) {
+  return out << seed.value;
+}
+
+void validate(boost::any& value, const std::vector<std::string>& tokens, SeedValue*, int) {
+  po::validators::check_first_occurrence(value);
+  const std::string& text = po::validators::get_single_string(tokens);
+  SeedValue seed;
+  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed.value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size())
+    throw po::invalid_option_value(text);
+  value = seed;
+}
+
 namespace {
 
-// a default as a person writes it: "0.050000000000000003" becomes "0.05"
-std::string readableDefault(const std::string& text) {
+// a number as a person writes it: "0.050000000000000003" becomes "0.05"
+std::string readableNumber(const std::string& text) {
   char* end = nullptr;
   double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || text.find('.') == std::string::npos)
@@ -313,6 +375,23 @@ std::string readableDefault(const std::string& text) {
   char shorter[32];
   std::snprintf(shorter, sizeof shorter, "%.12g", value);
   return shorter;
+}
+
+// the default as Boost prints it: format_parameter() gives "arg (=default)"; "" when none
+std::string rawDefault(const po::option_description& option) {
+  boost::any value;
+  if (!option.semantic()->apply_default(value))
+    return "";
+  std::string parameter = option.format_parameter();
+  auto at = parameter.find("(=");
+  if (at == std::string::npos)
+    return "";
+  return parameter.substr(at + 2, parameter.size() - at - 3);
+}
+
+// whether an option is a true/false flag
+bool isFlag(const po::option_description& option) {
+  return dynamic_cast<const po::typed_value<bool>*>(option.semantic().get()) != nullptr;
 }
 
 // a table cell: pipes escaped so they do not split the cell
@@ -341,22 +420,48 @@ std::string optionsMarkdown(const po::options_description& desc) {
           << "| key | default | meaning |\n| --- | --- | --- |\n";
     }
 
-    // the default as the help prints it: format_parameter() gives "arg (=default)"
-    std::string default_text;
-    boost::any value;
-    if (option->semantic()->apply_default(value)) {
-      std::string parameter = option->format_parameter();
-      auto at = parameter.find("(=");
-      if (at != std::string::npos)
-        default_text = parameter.substr(at + 2, parameter.size() - at - 3);
-    }
-    bool is_flag = dynamic_cast<const po::typed_value<bool>*>(option->semantic().get()) != nullptr;
-    if (is_flag && (default_text == "0" || default_text == "1"))
-      default_text = default_text == "1" ? "true" : "false";
-    out << "| `" << key << "` | " << tableCell(readableDefault(default_text)) << " | "
+    out << "| `" << key << "` | " << tableCell(readableDefault(*option)) << " | "
         << tableCell(option->description()) << " |\n";
   }
   return out.str();
+}
+
+std::string readableDefault(const po::option_description& option) {
+  std::string text = rawDefault(option);
+  if (isFlag(option) && (text == "0" || text == "1"))
+    return text == "1" ? "true" : "false";
+  return readableNumber(text);
+}
+
+std::string optionsHelp(const po::options_description& desc) {
+  std::ostringstream boost_text;
+  boost_text << desc;
+  std::string text = boost_text.str();
+  // each "--key arg (=raw)" made readable, padded so the descriptions stay in their column
+  for (const auto& option : desc.options()) {
+    std::string raw = rawDefault(*option);
+    std::string readable = readableDefault(*option);
+    if (raw.empty() || raw == readable)
+      continue;
+    std::string from = "--" + option->long_name() + " arg (=" + raw + ")";
+    std::size_t at = text.find(from);
+    if (at == std::string::npos)
+      continue;
+    std::string to = "--" + option->long_name() + " arg (=" + readable + ")";
+    std::size_t after = at + from.size();
+    if (to.size() < from.size()) {
+      to.append(from.size() - to.size(), ' ');
+    } else {
+      // a longer default takes the spaces after it, leaving at least one
+      std::size_t spaces = 0;
+      while (after + spaces < text.size() && text[after + spaces] == ' ')
+        ++spaces;
+      std::size_t take = std::min(to.size() - from.size(), spaces > 0 ? spaces - 1 : 0);
+      text.erase(after, take);
+    }
+    text.replace(at, from.size(), to);
+  }
+  return text;
 }
 
 }  // namespace cambrian

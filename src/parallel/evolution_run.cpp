@@ -8,6 +8,7 @@
 #include "parallel/test_kill.hpp"
 #include "store/checkpoint.hpp"
 #include "store/history.hpp"
+#include "store/run_lock.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -142,9 +143,15 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     breeder.setViabilityCheck(run.viable);
 
   // a checkpoint to continue from (checked before anything is overwritten), or a fresh start
+  // (the directory locked first: one run at a time writes it)
   std::optional<CheckpointState> checkpoint;
+  std::optional<RunLock> lock;
   if (run.history) {
     makeOutputDirectory(run.out_dir);
+    std::string warning;
+    lock.emplace(run.out_dir, &warning);
+    if (!warning.empty())
+      out << "cambrian evolve: warning: " << warning << std::endl;
     if (!run.fresh)
       checkpoint = findCheckpoint(run.out_dir);
     if (checkpoint)

@@ -421,18 +421,33 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir) {
     throw Error(ExitCode::checkpoint, path + ": missing, but " + previous +
                                           " exists (the run wrote checkpoints)" + previousStatus() +
                                           fresh);
+  // no checkpoint at all: a history is only replaced when it holds no complete generation
   std::string history = dir + "/history.h5";
   if (exists(history)) {
-    bool recorded = false;
+    std::vector<HistoryGeneration> generations;
     try {
-      for (const HistoryGeneration& g : HistoryReader(history).generations())
-        recorded = recorded || g.checkpoint_seconds > 0;
-    } catch (const Error&) {
-      // an unreadable history holds nothing to continue from
+      generations = HistoryReader(history).generations();
+    } catch (const Error& e) {
+      throw Error(ExitCode::checkpoint,
+                  std::string(e.what()) + "; there is no " + path +
+                      " to continue from, and the history is not one this run could replace "
+                      "safely: nothing was changed" +
+                      fresh);
     }
+    bool recorded = false;
+    for (const HistoryGeneration& g : generations)
+      recorded = recorded || g.checkpoint_seconds > 0;
     if (recorded)
       throw Error(ExitCode::checkpoint, path + ": missing, but " + history +
                                             " records that checkpoints were written" + fresh);
+    if (!generations.empty())
+      throw Error(ExitCode::checkpoint,
+                  history + ": holds " + std::to_string(generations.size()) +
+                      " generation(s) but there is no " + path +
+                      " to continue from (the run stopped before its first checkpoint; "
+                      "run.checkpoint_every and run.checkpoint_minutes set the cadence): nothing "
+                      "was changed" +
+                      fresh);
   }
   return std::nullopt;
 }

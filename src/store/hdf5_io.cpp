@@ -71,12 +71,16 @@ Handle openFile(const std::string& path, const char* kind, bool swmr, std::strin
     return Handle();
   }
 
-  // read-only, for SWMR reading first when asked (a file a writer may still be growing)
+  // read-only, for SWMR reading first when asked (a file a writer may still be growing); without
+  // HDF5's file lock, as the history writer opens it (the flags must agree within a process)
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_file_locking(access.get(), false, true);
   Handle file;
   if (swmr)
-    file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT), H5Fclose);
+    file =
+        Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, access.get()), H5Fclose);
   if (!file.valid())
-    file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose);
   if (!file.valid())
     problem = "HDF5 file cannot be opened (truncated or corrupt)";
   return file;

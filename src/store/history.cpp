@@ -338,13 +338,52 @@ HistoryGeneration makeHistoryGeneration(const GenerationRecord& record,
 // writer
 
 struct HistoryWriter::Impl {
-  Handle file;
+  Handle file;                                          // open only while writing
   std::unordered_map<std::string, Handle> individuals;  // column name -> dataset
   std::unordered_map<std::string, Handle> generations;
   Handle genome_bytes;
   std::uint64_t genome_end = 0;           // bytes in genome_bytes so far
   std::vector<std::uint8_t> byte_buffer;  // a generation's genomes, concatenated (kept: no
                                           // fresh megabyte to fault in every generation)
+
+  // the datasets, then the file: afterwards the file on disk is closed and consistent
+  bool closeFile() {
+    individuals.clear();
+    generations.clear();
+    genome_bytes.reset();
+    return file.reset() >= 0;
+  }
+
+  // reopens the file for SWMR writing and its datasets; false when any of it fails
+  bool openFile(const std::string& path) {
+    if (file.valid())
+      return true;
+    // newest format (SWMR needs it); no HDF5 file lock, so a reader holding the file open
+    // (HDFView, h5dump) never stops the run: the run's own lock keeps other writers out
+    Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+    H5Pset_libver_bounds(access.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
+    H5Pset_file_locking(access.get(), false, true);
+    file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR | H5F_ACC_SWMR_WRITE, access.get()), H5Fclose);
+    if (!file.valid())
+      return false;
+    auto openAll = [&](const char* group, const std::vector<Column>& columns,
+                       std::unordered_map<std::string, Handle>& datasets) {
+      for (const Column& column : columns) {
+        std::string name = std::string("/") + group + "/" + column.name;
+        Handle dataset(H5Dopen2(file.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
+        if (!dataset.valid())
+          return false;
+        datasets.emplace(column.name, std::move(dataset));
+      }
+      return true;
+    };
+    genome_bytes = Handle(H5Dopen2(file.get(), "/individuals/genome_bytes", H5P_DEFAULT), H5Dclose);
+    if (genome_bytes.valid() && openAll("individuals", individualColumns(), individuals) &&
+        openAll("generations", generationColumns(), generations))
+      return true;
+    closeFile();
+    return false;
+  }
 };
 
 std::uint64_t historyChunkRows(std::uint64_t population) {
@@ -433,9 +472,9 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
                 "genome_bytes[genome_offset[i] : genome_offset[i] + genome_size[i]]"))
     fail("cannot create dataset /individuals/genome_bytes");
 
-  // from here on readers may open the file while it grows
-  if (H5Fstart_swmr_write(file) < 0)
-    fail("cannot switch to SWMR write mode");
+  // closed until the first append: between appends any HDF5 tool can open the file
+  if (!impl_->closeFile())
+    fail("cannot close HDF5 file");
 }
 
 HistoryWriter::~HistoryWriter() {
@@ -452,6 +491,8 @@ void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
     throw Error(ExitCode::output_file, path_ + ": history file is closed");
   QuietErrors quiet;
   Impl& m = *impl_;
+  if (!m.openFile(path_))
+    throw Error(ExitCode::output_file, path_ + ": cannot open the history file to append to it");
   bool ok = true;
   auto append = [&](std::unordered_map<std::string, Handle>& datasets, const char* name,
                     const auto& values, hsize_t width) {
@@ -524,13 +565,17 @@ void HistoryWriter::completeLastGeneration(const GenerationTimes& times) {
   if (!impl_)
     throw Error(ExitCode::output_file, path_ + ": history file is closed");
   QuietErrors quiet;
+  if (!impl_->openFile(path_))
+    throw Error(ExitCode::output_file, path_ + ": cannot open the history file to complete it");
 
   // the last row of each column, rewritten in place (SWMR allows changing existing data)
   hid_t any = impl_->generations.at("wall_seconds").get();
   Handle space(H5Dget_space(any), H5Sclose);
   hsize_t rows = 0;
-  if (H5Sget_simple_extent_dims(space.get(), &rows, nullptr) != 1 || rows == 0)
+  if (H5Sget_simple_extent_dims(space.get(), &rows, nullptr) != 1 || rows == 0) {
+    impl_->closeFile();
     return;
+  }
   hsize_t offset = rows - 1;
   const std::pair<const char*, double> cells[] = {
       {"rank0_serial_seconds", times.rank0_serial_seconds},
@@ -542,8 +587,10 @@ void HistoryWriter::completeLastGeneration(const GenerationTimes& times) {
       throw Error(ExitCode::output_file,
                   path_ + ": cannot write " + column + " of row " + std::to_string(offset));
   }
-  if (H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL) < 0)
-    throw Error(ExitCode::output_file, path_ + ": cannot flush row " + std::to_string(offset));
+  // the generation is complete: the file is closed until the next append
+  if (!impl_->closeFile())
+    throw Error(ExitCode::output_file,
+                path_ + ": cannot close after row " + std::to_string(offset));
 }
 
 void HistoryWriter::renameTo(const std::string& path) {
@@ -604,11 +651,7 @@ void HistoryWriter::close() {
     return;
   QuietErrors quiet;
   std::unique_ptr<Impl> m = std::move(impl_);
-  // datasets before the file
-  m->individuals.clear();
-  m->generations.clear();
-  m->genome_bytes.reset();
-  if (m->file.reset() < 0)
+  if (!m->closeFile())
     throw Error(ExitCode::output_file, path_ + ": cannot close HDF5 file");
 }
 

@@ -284,12 +284,38 @@ TEST(Checkpoint, MissingButExpectedIsAnError) {
   EXPECT_EQ(code, ExitCode::checkpoint);
   EXPECT_NE(message.find("records that checkpoints were written"), std::string::npos) << message;
 
-  // a history without one: a fresh run
+  // a history with generations but no checkpoint: refused, the history kept
   dir = tempDir("missing_unrecorded");
   {
     HistoryWriter writer(dir + "/history.h5", HistoryAttributes{});
     writer.appendGeneration({}, HistoryGeneration{});
   }
+  auto size_before = std::filesystem::file_size(dir + "/history.h5");
+  std::tie(code, message) = failure([&] { findCheckpoint(dir); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("holds 1 generation(s)"), std::string::npos) << message;
+  EXPECT_NE(message.find("nothing was changed"), std::string::npos) << message;
+  EXPECT_NE(message.find("--fresh"), std::string::npos) << message;
+  EXPECT_EQ(std::filesystem::file_size(dir + "/history.h5"), size_before);
+
+  // a history that is not one (junk, or another kind of HDF5 file): refused, kept
+  dir = tempDir("missing_junk_history");
+  std::ofstream(dir + "/history.h5") << "not an HDF5 file";
+  std::tie(code, message) = failure([&] { findCheckpoint(dir); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find(dir + "/history.h5"), std::string::npos) << message;
+  EXPECT_NE(message.find("nothing was changed"), std::string::npos) << message;
+  EXPECT_EQ(std::filesystem::file_size(dir + "/history.h5"), 16u);
+  dir = tempDir("missing_foreign_history");
+  writeCheckpoint(dir, makeState(1));
+  std::filesystem::rename(checkpointPath(dir), dir + "/history.h5");
+  std::tie(code, message) = failure([&] { findCheckpoint(dir); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find(dir + "/history.h5"), std::string::npos) << message;
+
+  // a history without a complete generation (killed during the first): a fresh run
+  dir = tempDir("missing_empty_history");
+  { HistoryWriter writer(dir + "/history.h5", HistoryAttributes{}); }
   EXPECT_FALSE(findCheckpoint(dir).has_value());
 }
 

@@ -8,11 +8,13 @@
 
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <utility>
 
 namespace cambrian {
 namespace {
@@ -274,6 +276,71 @@ TEST(History, ReadableByAnotherProcessWhileTheWriterHoldsItOpen) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
   close(to_parent[0]);
   close(to_child[1]);
+  EXPECT_EQ(HistoryReader(path).generations().size(), 2u);
+}
+
+// the output and exit code of a shell command
+std::pair<int, std::string> shell(const std::string& command) {
+  std::string output;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe)
+    return {-1, ""};
+  char buffer[4096];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0)
+    output.append(buffer, n);
+  int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+TEST(History, ToolsWithoutSwmrReadItBetweenGenerations) {
+  // after each completed generation the file is closed: h5dump (no SWMR) reads it
+  std::string path = tempPath("tools.h5");
+  HistoryWriter writer(path, makeAttributes());
+  EXPECT_EQ(shell("h5dump -H " + path).first, 0);
+  for (int g = 0; g < 2; ++g) {
+    writer.appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
+    writer.completeLastGeneration(GenerationTimes{});
+    auto [code, output] = shell("h5dump -d /generations/generation " + path);
+    EXPECT_EQ(code, 0) << output;
+    EXPECT_NE(
+        output.find("DATASPACE  SIMPLE { ( " + std::to_string(g + 1) + " ) / ( H5S_UNLIMITED ) }"),
+        std::string::npos)
+        << output;
+  }
+}
+
+TEST(History, AReaderHoldingTheFileOpenDoesNotStopTheWriter) {
+  // another process opens the file the plain way (HDF5's default file lock) and keeps it open
+  std::string path = tempPath("held.h5");
+  HistoryWriter writer(path, makeAttributes());
+  writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
+  writer.completeLastGeneration(GenerationTimes{});
+  int ready[2], release[2];
+  ASSERT_EQ(pipe(ready), 0);
+  ASSERT_EQ(pipe(release), 0);
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    char token = file >= 0 ? 'y' : 'n';
+    if (write(ready[1], &token, 1) != 1 || read(release[0], &token, 1) != 1)
+      _exit(4);
+    _exit(file >= 0 && H5Fclose(file) >= 0 ? 0 : 3);
+  }
+  char token = 0;
+  ASSERT_EQ(read(ready[0], &token, 1), 1);
+  EXPECT_EQ(token, 'y');
+
+  // the writer appends and completes a generation while the reader holds the file
+  EXPECT_NO_THROW({
+    writer.appendGeneration(makeRows(1, 5), makeGeneration(1));
+    writer.completeLastGeneration(GenerationTimes{});
+  });
+  ASSERT_EQ(write(release[1], &token, 1), 1);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
   EXPECT_EQ(HistoryReader(path).generations().size(), 2u);
 }
 

@@ -1,0 +1,165 @@
+// cambrian evolve through the executable, in one process (no mpirun): what the command line
+// and the experiment file give, where a bad value is reported, the stored settings, and the
+// output directory's protection (a changed seed, a foreign history, a second run).
+#include "app/cli.hpp"
+#include "store/history.hpp"
+#include "store/run_lock.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace cambrian {
+namespace {
+
+using test::runCambrian;
+
+// a fresh, empty directory under the test temp directory
+std::string freshDir(const std::string& name) {
+  std::string dir = testing::TempDir() + "/cambrian_evolve_test_" + name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// a file's bytes
+std::string contents(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+// a tiny synthetic evolution's arguments, writing into `dir`
+std::string tinyRun(const std::string& dir, int generations = 2) {
+  return "evolve --task.name synthetic --task.synthetic_cost_us 10 --evolution.population 6 "
+         "--evolution.generations " +
+         std::to_string(generations) + " --quiet --out " + dir;
+}
+
+// the value of `key = ` in an INI-like text, or ""
+std::string iniValue(const std::string& text, const std::string& key) {
+  std::size_t at = text.find("\n" + key + " = ");
+  if (at == std::string::npos)
+    return "";
+  at += key.size() + 4;
+  return text.substr(at, text.find('\n', at) - at);
+}
+
+TEST(EvolveCommand, ShortSeedIsTheStoredSeedAndAChangedSeedIsRefused) {
+  std::string dir = freshDir("seed");
+  auto first = runCambrian(tinyRun(dir) + " --seed 3");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+
+  // the stored settings carry the seed the run used, not the file's or the default
+  HistoryReader reader(dir + "/history.h5");
+  EXPECT_EQ(reader.attributes().seed, 3u);
+  EXPECT_EQ(iniValue(reader.attributes().config_text, "seed"), "3")
+      << reader.attributes().config_text;
+
+  // continuing with another seed would mix two runs: refused, nothing changed
+  std::string history = contents(dir + "/history.h5");
+  std::string checkpoint = contents(dir + "/checkpoint.h5");
+  auto second = runCambrian(tinyRun(dir, 3) + " --seed 4");
+  EXPECT_EQ(second.exit_code, 6) << second.output;
+  EXPECT_NE(second.output.find("run.seed was '3'"), std::string::npos) << second.output;
+  EXPECT_NE(second.output.find("is '4'"), std::string::npos) << second.output;
+  EXPECT_EQ(contents(dir + "/history.h5"), history);
+  EXPECT_EQ(contents(dir + "/checkpoint.h5"), checkpoint);
+
+  // the same seed continues
+  auto third = runCambrian(tinyRun(dir, 3) + " --seed 3");
+  EXPECT_EQ(third.exit_code, 0) << third.output;
+  EXPECT_NE(third.output.find("resuming"), std::string::npos) << third.output;
+}
+
+TEST(EvolveCommand, ANegativeOrMalformedSeedIsRefused) {
+  std::string dir = freshDir("negative_seed");
+  for (const char* seed : {"-3", "1e3", "x", "18446744073709551616"}) {
+    auto result = runCambrian(tinyRun(dir) + " --seed " + seed);
+    EXPECT_EQ(result.exit_code, 2) << seed << ": " << result.output;
+    EXPECT_NE(result.output.find(seed), std::string::npos) << result.output;
+  }
+  std::ofstream(dir + "/bad_seed.ini") << "[run]\nseed = -3\n";
+  auto from_file = runCambrian(tinyRun(dir) + " --config " + dir + "/bad_seed.ini");
+  EXPECT_EQ(from_file.exit_code, 3) << from_file.output;
+  EXPECT_NE(from_file.output.find("bad_seed.ini"), std::string::npos) << from_file.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/history.h5"));
+}
+
+TEST(EvolveCommand, ABadValueNamesWhereItCameFrom) {
+  std::string dir = freshDir("origin");
+  std::string ini = dir + "/experiment.ini";
+  std::ofstream(ini) << "[physics]\ntime_step = -1\n[evolution]\npopulation = 8\n";
+
+  // from the file: the file, the key and the value
+  auto from_file = runCambrian(tinyRun(dir + "/out") + " --config " + ini);
+  EXPECT_EQ(from_file.exit_code, 3) << from_file.output;
+  EXPECT_NE(from_file.output.find(ini + ": physics.time_step = -1"), std::string::npos)
+      << from_file.output;
+
+  // from the command line: not blamed on the file
+  std::ofstream(ini) << "[evolution]\npopulation = 8\n";
+  auto from_line =
+      runCambrian(tinyRun(dir + "/out") + " --config " + ini + " --physics.max_speed inf");
+  EXPECT_EQ(from_line.exit_code, 3) << from_line.output;
+  EXPECT_NE(from_line.output.find("command line: --physics.max_speed = inf"), std::string::npos)
+      << from_line.output;
+  EXPECT_EQ(from_line.output.find(ini + ":"), std::string::npos) << from_line.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/history.h5"));
+}
+
+TEST(EvolveCommand, AHistoryWithoutACheckpointIsNeverOverwritten) {
+  // not an HDF5 file
+  std::string dir = freshDir("junk_history");
+  std::ofstream(dir + "/history.h5") << "someone's notes";
+  auto junk = runCambrian(tinyRun(dir));
+  EXPECT_EQ(junk.exit_code, 6) << junk.output;
+  EXPECT_NE(junk.output.find(dir + "/history.h5"), std::string::npos) << junk.output;
+  EXPECT_EQ(contents(dir + "/history.h5"), "someone's notes");
+
+  // a run's history whose checkpoints are gone: refused too; --fresh starts over
+  std::string run = freshDir("no_checkpoint");
+  ASSERT_EQ(runCambrian(tinyRun(run)).exit_code, 0);
+  std::filesystem::remove(run + "/checkpoint.h5");
+  std::filesystem::remove(run + "/checkpoint.prev.h5");
+  std::string history = contents(run + "/history.h5");
+  auto again = runCambrian(tinyRun(run));
+  EXPECT_EQ(again.exit_code, 6) << again.output;
+  EXPECT_EQ(contents(run + "/history.h5"), history);
+  auto fresh = runCambrian(tinyRun(run) + " --fresh");
+  EXPECT_EQ(fresh.exit_code, 0) << fresh.output;
+}
+
+TEST(EvolveCommand, ASecondRunOnTheSameDirectoryIsRefused) {
+  std::string dir = freshDir("locked");
+  // another process (this test) holds the directory's lock
+  int fd = ::open(RunLock::pathIn(dir).c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  auto busy = runCambrian(tinyRun(dir));
+  EXPECT_EQ(busy.exit_code, 5) << busy.output;
+  EXPECT_NE(busy.output.find("another cambrian evolve is writing"), std::string::npos)
+      << busy.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/history.h5"));
+
+  // released: the run goes ahead
+  ::close(fd);
+  auto free = runCambrian(tinyRun(dir));
+  EXPECT_EQ(free.exit_code, 0) << free.output;
+}
+
+TEST(EvolveCommand, HelpShowsDefaultsAsWritten) {
+  auto help = runCambrian("evolve --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("--evolution.elite_fraction arg (=0.2)"), std::string::npos)
+      << help.output;
+  EXPECT_NE(help.output.find("--run.quiet arg (=false)"), std::string::npos);
+  EXPECT_EQ(help.output.find("0000000000"), std::string::npos) << help.output;
+}
+
+}  // namespace
+}  // namespace cambrian
