@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "parallel/scheduler.hpp"
+#include "physics/simulation.hpp"
 #include "store/history.hpp"
 #include "store/trajectory.hpp"
 
@@ -201,6 +202,12 @@ int runReplay(int argc, char** argv) {
         "note           replaying with cambrian %s, git %s: a different version or "
         "Bullet build may not reproduce the outcome bit for bit\n",
         kVersion, kGitHash);
+  }
+  if (attributes.bullet_precision != bulletPrecision()) {
+    std::printf(
+        "note           the history was evaluated with Bullet %s, this build uses %s: the "
+        "outcome will differ\n",
+        attributes.bullet_precision.c_str(), bulletPrecision());
   }
   std::printf("creature       id %llu, generation %llu, operator %s\n",
               static_cast<unsigned long long>(row.id),

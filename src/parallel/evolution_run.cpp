@@ -1,11 +1,13 @@
 #include "parallel/evolution_run.hpp"
 
 #include "cambrian/error.hpp"
+#include "cambrian/version.hpp"
 
 #include "evolution/breeder.hpp"
 #include "evolution/statistics.hpp"
 #include "parallel/mpi_context.hpp"
 #include "parallel/test_kill.hpp"
+#include "physics/simulation.hpp"
 #include "store/checkpoint.hpp"
 #include "store/history.hpp"
 #include "store/run_lock.hpp"
@@ -55,6 +57,7 @@ HistoryAttributes historyAttributes(const EvolutionSettings& settings, const Run
   attributes.config_hash = resultConfigHash(run.config_text);
   attributes.seed = settings.seed;
   attributes.rank_count = run.rank_count;
+  attributes.bullet_precision = bulletPrecision();
   return attributes;
 }
 
@@ -156,6 +159,13 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
       checkpoint = findCheckpoint(run.out_dir);
     if (checkpoint)
       checkResumeSettings(checkpointPath(run.out_dir), checkpoint->config_text, run.config_text);
+    // another build may evaluate creatures differently: allowed, but said
+    if (checkpoint &&
+        (checkpoint->cambrian_version != kVersion || checkpoint->git_hash != kGitHash))
+      out << "cambrian evolve: warning: " << checkpointPath(run.out_dir)
+          << " was written by cambrian " << checkpoint->cambrian_version << " (git "
+          << checkpoint->git_hash << "), this is " << kVersion << " (git " << kGitHash
+          << "): the run continues exactly only if both evaluate and breed alike" << std::endl;
   }
   RunDigest digest;
   std::optional<Population> last;  // the last evaluated generation

@@ -494,4 +494,8 @@ void Simulation::partPoses(std::vector<Transform>& poses) const {
   }
 }
 
+const char* bulletPrecision() {
+  return sizeof(btScalar) == 8 ? "float64" : "float32";
+}
+
 }  // namespace cambrian

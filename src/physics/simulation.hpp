@@ -82,4 +82,8 @@ class Simulation {
   std::vector<int> damped_links_;  // every revolute link, real or virtual
 };
 
+/// Bullet's scalar type in this build: "float64" (the float64 package, the default) or
+/// "float32"; recorded in every history (bullet_precision), since results depend on it.
+const char* bulletPrecision();
+
 }  // namespace cambrian

@@ -358,6 +358,9 @@ CheckpointState readCheckpoint(const std::string& path) {
             readScalar(f, "rank_count", ranks) && readScalar(f, "state_hash", hash);
   if (!ok)
     fail("a root attribute is missing or of the wrong type (corrupt checkpoint)");
+  // who wrote it (for the resume warning; not part of the state)
+  readString(f, "cambrian_version", state.cambrian_version);
+  readString(f, "git_hash", state.git_hash);
   state.rank_count = ranks;
   if (state.next_generation != generation + 1)
     fail("next_generation " + std::to_string(state.next_generation) +

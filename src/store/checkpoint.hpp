@@ -29,6 +29,8 @@ struct CheckpointState {
   std::uint64_t next_id = 0;          ///< id the next new individual gets (Breeder::nextId)
   std::uint64_t digest = 0;           ///< RunDigest::value() over every generation so far
   int rank_count = 1;                 ///< MPI ranks of the run that wrote it (information only)
+  std::string cambrian_version;       ///< version of the cambrian that wrote it (read only)
+  std::string git_hash;               ///< and its git commit (read only)
   Population population;              ///< the last evaluated generation, every field kept
 };
 

@@ -2,10 +2,12 @@
 // and the experiment file give, where a bad value is reported, the stored settings, and the
 // output directory's protection (a changed seed, a foreign history, a second run).
 #include "app/cli.hpp"
+#include "physics/simulation.hpp"
 #include "store/history.hpp"
 #include "store/run_lock.hpp"
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <fcntl.h>
 #include <filesystem>
@@ -150,6 +152,36 @@ TEST(EvolveCommand, ASecondRunOnTheSameDirectoryIsRefused) {
   ::close(fd);
   auto free = runCambrian(tinyRun(dir));
   EXPECT_EQ(free.exit_code, 0) << free.output;
+}
+
+TEST(EvolveCommand, ResumingACheckpointOfAnotherVersionWarns) {
+  std::string dir = freshDir("other_version");
+  ASSERT_EQ(runCambrian(tinyRun(dir)).exit_code, 0);
+
+  // the checkpoint says an older cambrian wrote it
+  hid_t file = H5Fopen((dir + "/checkpoint.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  ASSERT_GE(H5Adelete(file, "cambrian_version"), 0);
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, H5T_VARIABLE);
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t attribute = H5Acreate2(file, "cambrian_version", type, space, H5P_DEFAULT, H5P_DEFAULT);
+  const char* old_version = "0.0.1";
+  ASSERT_GE(H5Awrite(attribute, type, &old_version), 0);
+  H5Aclose(attribute);
+  H5Sclose(space);
+  H5Tclose(type);
+  H5Fclose(file);
+
+  // it continues, and says so
+  auto resumed = runCambrian(tinyRun(dir, 3));
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("warning: " + dir + "/checkpoint.h5 was written by cambrian 0.0.1"),
+            std::string::npos)
+      << resumed.output;
+  // the history names this build's Bullet precision
+  EXPECT_EQ(HistoryReader(dir + "/history.h5").attributes().bullet_precision,
+            std::string(bulletPrecision()));
 }
 
 TEST(EvolveCommand, HelpShowsDefaultsAsWritten) {
