@@ -4,8 +4,9 @@
 #   Commands run in WORKDIR (jobs/ and analysis/ linked from the source tree), with the
 #   README's binary path replaced by CAMBRIAN and evolutions shrunk to a few tiny generations.
 #   `bash jobs/test.sh` is what CI runs; `bash jobs/demo.sh` runs here with the built binary;
-#   the Slurm lines are run by the jobs tests (tests/jobs) against a one-node Slurm, and are
-#   checked here to name scripts that exist and parse.
+#   the chain line runs with --dry-run (its sbatch commands counted); the sbatch line is run by
+#   the jobs tests (tests/jobs) against a one-node Slurm, and is checked here to name a script
+#   that exists and parses.
 set -euo pipefail
 source_dir=$1 cambrian=$2 work=$3
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 MPLBACKEND=Agg
@@ -25,8 +26,32 @@ for command in "${commands[@]}"; do
       grep -q "jobs/test.sh" "$source_dir/.ci/run" || { echo ".ci/run does not run jobs/test.sh" >&2; exit 1; }
       continue ;;
     "bash jobs/demo.sh")
-      command="CAMBRIAN=$cambrian DEMO_OUT=$work/runs/demo bash jobs/demo.sh $shrink" ;;
-    sbatch*|"bash jobs/slurm/"*)
+      # with its progress lines (an ETA each) and the closing list of what it wrote
+      read -r -a demo_args <<< "${shrink% --quiet}"
+      CAMBRIAN=$cambrian DEMO_OUT=$work/runs/demo bash jobs/demo.sh "${demo_args[@]}" \
+        > "$work/demo.out" 2>&1 || { cat "$work/demo.out"; echo "README demo failed" >&2; exit 1; }
+      for expected in "gen 2/2 .* eta 0:00:00" "fitness plot:  $work/runs/demo/fitness.png" \
+                      "best creature: $work/runs/demo/best.gif"; do
+        grep -q -- "$expected" "$work/demo.out" || {
+          cat "$work/demo.out"; echo "README demo: no line matching '$expected'" >&2; exit 1; }
+      done
+      ran=$((ran + 1))
+      continue ;;
+    "bash jobs/slurm/chain.sh "*)
+      # the chain as written, dry: one sbatch line per job, each after the one before
+      read -r -a words <<< "$command"
+      jobs_in_chain=${words[2]}
+      bash "${words[1]}" "$jobs_in_chain" --dry-run "${words[@]:3}" > "$work/chain.out"
+      submitted=$(grep -c 'evolve.sbatch' "$work/chain.out" || true)
+      chained=$(grep -c 'dependency=afterany' "$work/chain.out" || true)
+      if [ "$submitted" -ne "$jobs_in_chain" ] || [ "$chained" -ne $((jobs_in_chain - 1)) ]; then
+        cat "$work/chain.out"
+        echo "README chain: $submitted jobs, $chained chained, from: $command" >&2
+        exit 1
+      fi
+      ran=$((ran + 1))
+      continue ;;
+    sbatch*)
       for script in $(grep -oE 'jobs/slurm/[a-z_.]+' <<< "$command"); do
         bash -n "$source_dir/$script"
       done
