@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -32,17 +36,44 @@ TEST(SimulateCommand, PrintsOutcome) {
   EXPECT_NE(lineStartingWith(result.output, "steps"), "");
 }
 
-// two separate processes give bit-identical outcomes (fitness printed with 17 digits)
+// the value printed on `key`'s line (%.17g, which reads back to the same double)
+double printedValue(const std::string& output, const std::string& key) {
+  std::string line = lineStartingWith(output, key);
+  return line.empty() ? std::nan("") : std::strtod(line.c_str() + key.size(), nullptr);
+}
+
+// a double as a hex float, for bit-level messages
+std::string hex(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%a", value);
+  return text;
+}
+
+// two separate processes give bit-identical outcomes for creatures that run the physics through
+// the whole evaluation (status ok, every step taken, moving bodies): fitness and every measure
+// compared bit for bit, steps exactly
 TEST(SimulateCommand, DeterministicAcrossProcesses) {
+  // settle 0.5 + trial 1 + resettle 0.5 + measured 2 s at 1/240 s
+  const std::string expected_steps = std::to_string(4 * 240);
   for (const std::string& creature :
-       {"--genome " + kCreatures + "walker4.genome", std::string("--random --seed 11"),
-        std::string("--random --seed 12")}) {
+       {"--genome " + kCreatures + "walker4.genome", "--genome " + kCreatures + "snake.genome",
+        std::string("--random --seed 2"), std::string("--random --seed 5")}) {
     auto a = runCambrian("simulate " + creature + kShort);
     auto b = runCambrian("simulate " + creature + kShort);
     ASSERT_EQ(a.exit_code, 0) << a.output;
-    EXPECT_EQ(lineStartingWith(a.output, "fitness"), lineStartingWith(b.output, "fitness"));
-    EXPECT_EQ(lineStartingWith(a.output, "status"), lineStartingWith(b.output, "status"));
+    ASSERT_EQ(b.exit_code, 0) << b.output;
+    ASSERT_EQ(lineStartingWith(a.output, "status"), "status     ok") << creature << a.output;
+    ASSERT_EQ(lineStartingWith(b.output, "status"), "status     ok") << creature << b.output;
+    EXPECT_EQ(lineStartingWith(a.output, "steps"), "steps      " + expected_steps) << creature;
     EXPECT_EQ(lineStartingWith(a.output, "steps"), lineStartingWith(b.output, "steps"));
+    // a creature that moves: a distance well above resting jitter
+    EXPECT_GT(printedValue(a.output, "distance"), 0.01) << creature << a.output;
+    for (const char* key : {"fitness", "distance", "body_length", "body_lengths"}) {
+      double x = printedValue(a.output, key), y = printedValue(b.output, key);
+      ASSERT_TRUE(std::isfinite(x)) << creature << ": no " << key << " in\n" << a.output;
+      EXPECT_EQ(std::memcmp(&x, &y, sizeof x), 0)
+          << creature << ": " << key << " " << hex(x) << " vs " << hex(y);
+    }
   }
 }
 
@@ -141,6 +172,36 @@ TEST(SimulateCommand, TruncatedGenomeFileIsRefused) {
     EXPECT_EQ(result.exit_code, code(ExitCode::input_file)) << "cut " << cut << result.output;
     EXPECT_NE(result.output.find(path + ":"), std::string::npos) << "cut " << cut << result.output;
   }
+}
+
+// the rest check through the command line: a swinging pendulum is reported unstable, and a cap
+// shorter than a settle phase is a config error naming the key
+TEST(SimulateCommand, RestCheck) {
+  const std::string path = std::string(CAMBRIAN_BINARY_DIR) + "/simulate_pendulum.genome";
+  std::ofstream(path, std::ios::trunc) << "cambrian-genome 2\n"
+                                          "node 0 size 1.2 1.2 0.1 density 3000 joint rigid\n"
+                                          "node 1 size 1.0 0.1 0.1 density 500 joint rigid\n"
+                                          "node 2 size 0.6 0.1 0.1 density 3000 limit 3.1 3.1 3.1\n"
+                                          "connection 0 -> 1 position 0 0 1\n"
+                                          "connection 1 -> 2 orientation 0 1.5708 0\n"
+                                          "end\n";
+  auto off = runCambrian("simulate --genome " + path + kShort);
+  ASSERT_EQ(off.exit_code, 0) << off.output;
+  EXPECT_EQ(lineStartingWith(off.output, "status"), "status     ok") << off.output;
+  auto on = runCambrian("simulate --genome " + path + kShort + " --task.rest_check true");
+  ASSERT_EQ(on.exit_code, 0) << on.output;
+  EXPECT_EQ(lineStartingWith(on.output, "status").rfind("status     unstable: ", 0), 0u)
+      << on.output;
+  EXPECT_EQ(lineStartingWith(on.output, "fitness"), "fitness    0") << on.output;
+
+  auto short_cap =
+      runCambrian("simulate --random --task.rest_check true --task.settle_max_time 0.1");
+  EXPECT_EQ(short_cap.exit_code, code(ExitCode::config)) << short_cap.output;
+  EXPECT_NE(short_cap.output.find("task.settle_max_time = 0.1"), std::string::npos)
+      << short_cap.output;
+  auto bad_speed = runCambrian("simulate --random --task.rest_speed 0");
+  EXPECT_EQ(bad_speed.exit_code, code(ExitCode::config)) << bad_speed.output;
+  EXPECT_NE(bad_speed.output.find("task.rest_speed = 0"), std::string::npos) << bad_speed.output;
 }
 
 // every subcommand has --help

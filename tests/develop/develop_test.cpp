@@ -471,11 +471,14 @@ TEST(Develop, SameGenomeDevelopsIdentically) {
   expectSamePlan(a, b);
 }
 
-TEST(Develop, TenThousandRandomGenomesDevelopWithinLimits) {
+// the same 10,000 random genomes are each valid under the default limits and develop into a
+// body within them
+TEST(Develop, TenThousandRandomGenomesAreValidAndDevelopWithinLimits) {
   const GenomeLimits limits;
   int truncated = 0, reflected = 0;
   for (std::uint64_t individual = 0; individual < 10000; ++individual) {
-    const Genome genome = randomGenome(limits, 2024, 0, individual);
+    const Genome genome = randomGenome(limits, 2024, individual / 100, individual % 100);
+    ASSERT_NO_THROW(validateGenome(genome, limits)) << "individual " << individual;
     BodyPlan plan;
     ASSERT_NO_THROW(plan = develop(genome, limits)) << "individual " << individual;
     // the full invariant check on a sample keeps the test fast; the cheap checks on all
@@ -515,25 +518,113 @@ Genome creature(const std::string& name) {
   return readGenomeFile(std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/" + name + ".genome");
 }
 
+// what one part of a hand-written creature must be, read off its genome file
+struct ExpectedPart {
+  int node, parent;
+  JointType joint;
+  double limit;  // every degree of freedom
+  Vec3 size;
+  bool reflected;
+};
+
+// the parts of a plan against a table: node, parent, joint type and its degrees of freedom,
+// limits, sizes, mirror flags; and one effector per degree of freedom of each non-root joint
+void expectParts(const BodyPlan& plan, const std::vector<ExpectedPart>& expected,
+                 const std::string& name) {
+  ASSERT_EQ(plan.parts.size(), expected.size()) << name;
+  int dofs = 0;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const PartPlan& part = plan.parts[i];
+    const ExpectedPart& want = expected[i];
+    const std::string where = name + " part " + std::to_string(i);
+    EXPECT_EQ(part.node, want.node) << where;
+    EXPECT_EQ(part.parent, want.parent) << where;
+    EXPECT_EQ(part.joint, want.joint) << where;
+    EXPECT_EQ(part.reflected, want.reflected) << where;
+    expectNear(part.size, want.size);
+    const int part_dofs = degreesOfFreedom(part.joint);
+    for (int d = 0; d < part_dofs; ++d)
+      EXPECT_DOUBLE_EQ(part.joint_limit[d], want.limit) << where << " dof " << d;
+    // the effectors of this part: exactly one per degree of freedom, in order
+    std::vector<int> driven;
+    for (const EffectorPlan& effector : plan.effectors) {
+      if (effector.part == static_cast<int>(i))
+        driven.push_back(effector.dof);
+    }
+    std::vector<int> all_dofs;
+    for (int d = 0; d < part_dofs; ++d)
+      all_dofs.push_back(d);
+    EXPECT_EQ(driven, all_dofs) << where;
+    dofs += part_dofs;
+  }
+  EXPECT_EQ(plan.degreesOfFreedom(), dofs) << name;
+  EXPECT_EQ(static_cast<int>(plan.effectors.size()), dofs) << name;
+  EXPECT_FALSE(plan.truncated) << name;
+}
+
+// the hand-written creatures develop into the bodies their files describe
 TEST(Develop, HandWrittenCreaturesHaveTheirPartsAndJoints) {
   const GenomeLimits limits;
-  const struct {
-    const char* name;
-    int parts;
-  } creatures[] = {{"single_block", 1}, {"pole", 2}, {"walker4", 5}, {"snake", 6}};
-  for (const auto& expected : creatures) {
-    const BodyPlan plan = develop(creature(expected.name), limits);
-    EXPECT_EQ(static_cast<int>(plan.parts.size()), expected.parts) << expected.name;
-    EXPECT_EQ(plan.jointCount(), expected.parts - 1) << expected.name;
-    EXPECT_FALSE(plan.truncated) << expected.name;
-    expectPlanConsistent(plan, limits);
-  }
-  // walker4's legs: front pair mirrored across y, back pair the same further back
+  const JointType rigid = JointType::rigid, revolute = JointType::revolute,
+                  universal = JointType::universal;
+
+  // single_block: one 0.3 m cube; pole: a hinged 0.4 m pole on a 0.5 x 0.5 x 0.1 base
+  const BodyPlan block = develop(creature("single_block"), limits);
+  expectParts(block, {{0, -1, rigid, 1, {0.3, 0.3, 0.3}, false}}, "single_block");
+  const BodyPlan pole = develop(creature("pole"), limits);
+  expectParts(
+      pole,
+      {{0, -1, rigid, 1, {0.5, 0.5, 0.1}, false}, {1, 0, revolute, 1.2, {0.4, 0.06, 0.06}, false}},
+      "pole");
+  // the pole stands on the centre of the base's top face, its own x axis pointing up
+  expectNear(pole.parts[1].pivot_in_parent, {0, 0, 0.05});
+  expectNear(pole.parts[1].pose.position, {0, 0, 0.05 + 0.2});
+  expectNear(rotate(pole.parts[1].pose.rotation, {1, 0, 0}), {0, 0, 1});
+
+  // walker4: a rigid root body and four legs on universal hips (2 degrees of freedom each,
+  // lift about the leg's y axis, swing about its z axis), front pair from node 1 and back pair
+  // from node 2, the second of each pair the mirror copy
   const BodyPlan walker = develop(creature("walker4"), limits);
+  const Vec3 leg{0.3, 0.1, 0.1};
+  expectParts(walker,
+              {{0, -1, rigid, 1, {0.6, 0.3, 0.15}, false},
+               {1, 0, universal, 0.8, leg, false},
+               {1, 0, universal, 0.8, leg, true},
+               {2, 0, universal, 0.8, leg, false},
+               {2, 0, universal, 0.8, leg, true}},
+              "walker4");
+  expectNear(walker.parts[1].axes[0], {0, 1, 0});
+  expectNear(walker.parts[1].axes[1], {0, 0, 1});
+  // hips at 0.6 of the half-length from the centre on the +y and (mirrored) -y side faces
+  expectNear(walker.parts[1].pivot_in_parent, {0.18, 0.15, 0});
+  expectNear(walker.parts[2].pivot_in_parent, {0.18, -0.15, 0});
+  expectNear(walker.parts[3].pivot_in_parent, {-0.18, 0.15, 0});
+  expectNear(walker.parts[4].pivot_in_parent, {-0.18, -0.15, 0});
+  // mirrored legs sit mirror-symmetric across the body's x-z plane (and front and back pairs
+  // across its y-z plane); the legs lie off that plane, so the check means something
   const Vec3 c = walker.parts[1].pose.position;
-  EXPECT_LT(norm(walker.parts[2].pose.position - Vec3{c.x, -c.y, c.z}), 1e-12);
-  EXPECT_LT(norm(walker.parts[3].pose.position - Vec3{-c.x, c.y, c.z}), 1e-12);
-  EXPECT_LT(norm(walker.parts[4].pose.position - Vec3{-c.x, -c.y, c.z}), 1e-12);
+  EXPECT_GT(c.y, 0.15);
+  EXPECT_GT(c.x, 0.1);
+  expectNear(walker.parts[2].pose.position, {c.x, -c.y, c.z});
+  expectNear(walker.parts[3].pose.position, {-c.x, c.y, c.z});
+  expectNear(walker.parts[4].pose.position, {-c.x, -c.y, c.z});
+  // the mirror copy's long axis is the original's mirrored across y
+  const Vec3 along = rotate(walker.parts[1].pose.rotation, {1, 0, 0});
+  expectNear(rotate(walker.parts[2].pose.rotation, {1, 0, 0}), {along.x, -along.y, along.z});
+
+  // snake: one segment node repeated six times, a chain of revolute joints, in line along x
+  const BodyPlan snake = develop(creature("snake"), limits);
+  std::vector<ExpectedPart> chain;
+  for (int i = 0; i < 6; ++i)
+    chain.push_back({0, i - 1, i == 0 ? rigid : revolute, 0.7, {0.25, 0.1, 0.1}, false});
+  expectParts(snake, chain, "snake");
+  for (int i = 1; i < 6; ++i) {
+    EXPECT_EQ(snake.parts[i].depth, i);
+    expectNear(snake.parts[i].pose.position, {0.25 * i, 0, 0});
+  }
+
+  for (const BodyPlan* plan : {&block, &pole, &walker, &snake})
+    expectPlanConsistent(*plan, limits);
 }
 
 TEST(Develop, BrokenGenomesAndLimitsThrowNamingTheField) {

@@ -164,9 +164,26 @@ TEST(Simulation, ExplosionIsCaught) {
   Simulation simulation(plan, settings);
   for (int s = 0; s < 2400 && simulation.status() == EvalStatus::ok; ++s)
     simulation.step(true);
-  EXPECT_TRUE(simulation.status() == EvalStatus::exploded ||
-              simulation.status() == EvalStatus::non_finite)
-      << statusName(simulation.status());
+  // the speed monitor sees it before any state turns non-finite
+  EXPECT_EQ(simulation.status(), EvalStatus::exploded) << statusName(simulation.status());
+  EXPECT_NE(simulation.message().find("physics.max_speed"), std::string::npos)
+      << simulation.message();
+}
+
+// a non-finite state is caught as non_finite (not exploded) on the step it appears, and
+// stepping then stops; NaN gravity makes every part's position NaN after one step
+TEST(Simulation, NonFiniteStateIsCaught) {
+  BodyPlan plan = hinged(0.5);
+  PhysicsSettings settings;
+  settings.gravity = std::nan("");
+  Simulation simulation(plan, settings);
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  simulation.step(true);
+  EXPECT_EQ(simulation.status(), EvalStatus::non_finite) << simulation.message();
+  EXPECT_EQ(simulation.message(), "part 0 has a non-finite position");
+  EXPECT_FALSE(std::isfinite(simulation.centerOfMass().z));
+  simulation.step(true);
+  EXPECT_EQ(simulation.steps(), 1u);
 }
 
 // the same plan simulated twice in one process gives bit-identical states

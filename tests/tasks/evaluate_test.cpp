@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <vector>
 
 namespace cambrian {
@@ -126,9 +127,59 @@ TEST(Evaluate, Exploded) {
   physics.actuation = Actuation::torque;
   physics.strength_per_area = 1e13;
   Outcome outcome = evaluate(walker, GenomeLimits{}, shortWalk(), physics);
-  EXPECT_TRUE(outcome.status == EvalStatus::exploded || outcome.status == EvalStatus::non_finite)
-      << statusName(outcome.status);
+  // the speed monitor sees it before any state turns non-finite
+  EXPECT_EQ(outcome.status, EvalStatus::exploded) << statusName(outcome.status);
+  EXPECT_NE(outcome.message.find("physics.max_speed"), std::string::npos) << outcome.message;
   EXPECT_EQ(outcome.fitness, kWorstFitness);
+}
+
+// a state that turns non-finite (here: gravity NaN, which no config allows but the API does not
+// refuse) ends as non_finite, not as exploded, on the first step
+TEST(Evaluate, NonFiniteStateIsCaught) {
+  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
+  PhysicsSettings physics;
+  physics.gravity = std::nan("");
+  for (TaskKind kind : {TaskKind::walk, TaskKind::jump}) {
+    TaskSettings task = shortWalk();
+    task.kind = kind;
+    Outcome outcome = evaluate(walker, GenomeLimits{}, task, physics);
+    EXPECT_EQ(outcome.status, EvalStatus::non_finite)
+        << statusName(outcome.status) << ": " << outcome.message;
+    EXPECT_EQ(outcome.fitness, kWorstFitness);
+    EXPECT_EQ(outcome.steps, 1u);
+    EXPECT_NE(outcome.message.find("non-finite position"), std::string::npos) << outcome.message;
+  }
+}
+
+// an observer that throws part-way through
+class ThrowingObserver : public FrameObserver {
+ public:
+  std::uint64_t frameStride() const override { return 1; }
+  void begin(const BodyPlan&, const PhysicsSettings&) override {}
+  void frame(const EvalFrame& frame) override {
+    if (frame.step == 100)
+      throw std::runtime_error("observer gave up at step 100");
+  }
+};
+
+// an exception inside an evaluation becomes status failed with its message, never a crash:
+// from a frame observer, and from development under a limit it cannot meet
+TEST(Evaluate, ExceptionBecomesFailed) {
+  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
+  ThrowingObserver observer;
+  Outcome thrown = evaluate(walker, GenomeLimits{}, shortWalk(), PhysicsSettings{}, 0, &observer);
+  EXPECT_EQ(thrown.status, EvalStatus::failed) << statusName(thrown.status);
+  EXPECT_EQ(thrown.fitness, kWorstFitness);
+  EXPECT_EQ(thrown.message, "observer gave up at step 100");
+  EXPECT_TRUE(thrown.measures.empty());
+
+  GenomeLimits no_parts;
+  no_parts.max_parts = 0;
+  Outcome undeveloped = evaluate(walker, no_parts, shortWalk(), PhysicsSettings{});
+  EXPECT_EQ(undeveloped.status, EvalStatus::failed)
+      << statusName(undeveloped.status) << ": " << undeveloped.message;
+  EXPECT_EQ(undeveloped.fitness, kWorstFitness);
+  EXPECT_NE(undeveloped.message.find("max_parts"), std::string::npos) << undeveloped.message;
 }
 
 // the wall-clock bound stops an evaluation with a status
@@ -149,6 +200,66 @@ TEST(Evaluate, JumpOfPassiveCreature) {
   Outcome outcome = evaluate(passive, GenomeLimits{}, task, PhysicsSettings{});
   ASSERT_EQ(outcome.status, EvalStatus::ok);
   EXPECT_LT(outcome.measure("height"), 0.01);
+}
+
+// the lowest box corner of every frame, computed from the poses and the box sizes (not through
+// Simulation::lowestPoint), with the phase of each frame
+class LowestPointRecorder : public FrameObserver {
+ public:
+  std::uint64_t frameStride() const override { return 1; }
+  void begin(const BodyPlan& plan, const PhysicsSettings&) override { plan_ = &plan; }
+  void frame(const EvalFrame& frame) override {
+    double lowest = INFINITY;
+    for (std::size_t i = 0; i < frame.poses.size(); ++i) {
+      const Vec3 half = plan_->parts[i].size * 0.5;
+      for (int corner = 0; corner < 8; ++corner) {
+        Vec3 local{(corner & 1) ? half.x : -half.x, (corner & 2) ? half.y : -half.y,
+                   (corner & 4) ? half.z : -half.z};
+        lowest = std::min(lowest, apply(frame.poses[i], local).z);
+      }
+    }
+    lowest_.push_back(lowest);
+    phases_.push_back(frame.phase);
+  }
+  // the highest lowest point from the last frame before measuring to the end
+  double highestWhileMeasured() const {
+    double best = -INFINITY;
+    for (std::size_t f = 1; f < phases_.size(); ++f) {
+      if (phases_[f] == EvalPhase::measure)
+        best = std::max(
+            {best, lowest_[f], phases_[f - 1] != EvalPhase::measure ? lowest_[f - 1] : -INFINITY});
+    }
+    return best;
+  }
+  // the frame count in a phase
+  std::size_t frames(EvalPhase phase) const {
+    return static_cast<std::size_t>(std::count(phases_.begin(), phases_.end(), phase));
+  }
+
+ private:
+  const BodyPlan* plan_ = nullptr;
+  std::vector<double> lowest_;
+  std::vector<EvalPhase> phases_;
+};
+
+// walker4's bound takes all four feet off the ground: the jump task's height is clearly positive
+// and is the highest the lowest box corner rose while measured, computed here from the poses
+TEST(Evaluate, JumpHeightOfAHoppingCreature) {
+  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
+  TaskSettings task = shortWalk();
+  task.kind = TaskKind::jump;
+  LowestPointRecorder frames;
+  Outcome outcome = evaluate(walker, GenomeLimits{}, task, PhysicsSettings{}, 0, &frames);
+  ASSERT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
+  EXPECT_EQ(frames.frames(EvalPhase::measure),
+            static_cast<std::size_t>(std::llround(task.evaluation_time * 240)));
+  const double height = outcome.measure("height");
+  EXPECT_EQ(outcome.fitness, height);
+  EXPECT_GT(height, 0.02);  // a few centimetres, far above resting contact jitter
+  EXPECT_NEAR(height, frames.highestWhileMeasured(), 1e-9);
+  // the same body without its drive stays on the ground
+  Outcome passive = evaluate(withoutEffectors(walker), GenomeLimits{}, task, PhysicsSettings{});
+  EXPECT_LT(passive.measure("height"), 0.1 * height);
 }
 
 // the normalisations scale the same distance

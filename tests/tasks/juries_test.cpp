@@ -46,5 +46,41 @@ TEST(Juries, BodyLength) {
   EXPECT_NEAR(bodyLength(plan), 0.8, 1e-12);
 }
 
+// the height jury keeps the highest the lowest point has been since begin(): a block born
+// 0.3 m above the ground scores 0.3 m though it then falls and lands
+TEST(Juries, HeightKeepsTheHighestLowestPoint) {
+  BodyPlan plan = boxes({{0.2, 0.2, 0.2}});
+  plan.sensors.push_back({SensorKind::contact, 0, 0});
+  Simulation simulation(plan, PhysicsSettings{}, {10, 0, 0}, 0.3);
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  HeightJury height;
+  height.begin(simulation);
+  EXPECT_NEAR(height.value(simulation), 0.3, 1e-12);
+  for (int s = 0; s < 240; ++s) {
+    simulation.step(false);
+    height.observe(simulation);
+  }
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  EXPECT_LT(simulation.lowestPoint(), 0.005);  // landed
+  EXPECT_NEAR(height.value(simulation), 0.3, 1e-12);
+}
+
+// a jury begun on a body at rest on the ground, which then rises, scores the rise: the block
+// observed from the moment it lands is at about 0 m, so a jury begun later scores about 0
+TEST(Juries, HeightCountsFromBegin) {
+  BodyPlan plan = boxes({{0.2, 0.2, 0.2}});
+  Simulation simulation(plan, PhysicsSettings{}, {10, 0, 0}, 0.3);
+  for (int s = 0; s < 240; ++s)
+    simulation.step(false);
+  HeightJury height;
+  height.begin(simulation);
+  for (int s = 0; s < 240; ++s) {
+    simulation.step(false);
+    height.observe(simulation);
+  }
+  EXPECT_LT(height.value(simulation), 0.005);
+  EXPECT_GE(height.value(simulation), 0.0);
+}
+
 }  // namespace
 }  // namespace cambrian
