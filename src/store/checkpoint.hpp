@@ -70,7 +70,8 @@ void removeCheckpoints(const std::string& dir);
 
 /// True for settings that may change between a checkpoint and its resume because they do not
 /// affect results: evolution.generations, run.out, run.quiet, run.verbose, run.max_hours,
-/// run.checkpoint_every, run.checkpoint_minutes, run.test_kill_at. Every other key counts.
+/// run.checkpoint_every, run.checkpoint_minutes, run.dispatch_order, run.dispatch_seed,
+/// run.test_kill_at, run.test_worker_abort_at. Every other key counts.
 bool isRunOnlySetting(const std::string& key);
 
 /// "section.key" -> value of every `key = value` line of INI text under its `[section]`.
