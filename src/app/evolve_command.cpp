@@ -36,6 +36,7 @@ struct EvolveSettings {
   std::uint64_t test_worker_abort_at = 0;
   std::string dispatch_order_name = "largest_first";
   DispatchSettings dispatch;
+  SeedValue dispatch_seed;
 };
 
 // the [evolution] and [run] keys
@@ -122,7 +123,7 @@ po::options_description evolutionOptions(EvolveSettings& s) {
       "run.dispatch_order", po::value(&s.dispatch_order_name)->default_value(s.dispatch_order_name),
       "order in which a generation's creatures are handed out: largest_first (genome size) | "
       "shuffled | smallest_first; results are the same, only the span changes")(
-      "run.dispatch_seed", po::value(&s.dispatch.seed)->default_value(s.dispatch.seed),
+      "run.dispatch_seed", po::value(&s.dispatch_seed)->default_value(s.dispatch_seed),
       "shuffled: seed of the per-generation permutations (0 = the run seed)")(
       "run.checkpoint_every",
       po::value(&s.run.checkpoint_every)->default_value(s.run.checkpoint_every),
@@ -325,6 +326,7 @@ Setup parse(int argc, char** argv, bool read_seeds) {
     validateEvolutionSettings(s.evolution);
     checkRunSettings(s.run);
     s.dispatch.order = dispatchOrderFromName(s.dispatch_order_name);
+    s.dispatch.seed = s.dispatch_seed.value;
   } catch (const ConfigError& e) {
     throw ConfigError(locateSettingError(e.what(), origins));
   }
