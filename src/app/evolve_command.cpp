@@ -317,6 +317,10 @@ Setup parse(int argc, char** argv, bool read_seeds) {
   s.evolution.seed = s.seed.value;
   s.run.fresh = fresh;
   s.run.config_text = configText(settings, vm);
+  // every setting at its default (keys added since a checkpoint was written compare with these)
+  po::variables_map defaults;
+  po::store(po::parsed_options(&settings), defaults);
+  s.run.default_config_text = configText(settings, defaults);
 
   // words to enums and range checks, naming the file or the command line the value came from
   try {

@@ -158,7 +158,8 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     if (!run.fresh)
       checkpoint = findCheckpoint(run.out_dir);
     if (checkpoint)
-      checkResumeSettings(checkpointPath(run.out_dir), checkpoint->config_text, run.config_text);
+      checkResumeSettings(checkpointPath(run.out_dir), checkpoint->config_text, run.config_text,
+                          run.default_config_text);
     // another build may evaluate creatures differently: allowed, but said
     if (checkpoint &&
         (checkpoint->cambrian_version != kVersion || checkpoint->git_hash != kGitHash))

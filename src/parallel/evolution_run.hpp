@@ -21,11 +21,12 @@ struct RunSettings {
   std::string out_dir = "cambrian-run";  ///< history.h5, individuals.tsv, generations.tsv go here
   bool quiet = false;                    ///< no progress lines, only the digest
   bool verbose = false;                  ///< timing details after each progress line
-  ViabilityCheck viable;     ///< birth test for new individuals (none: accept all), rank 0 only
-  bool history = true;       ///< write DIR/history.h5 generation by generation (SWMR)
-  std::string config_text;   ///< the effective settings as INI text, stored in the history
-  int rank_count = 1;        ///< MPI ranks of the run, stored in the history
-  int checkpoint_every = 0;  ///< checkpoint every this many generations (0: no cadence)
+  ViabilityCheck viable;    ///< birth test for new individuals (none: accept all), rank 0 only
+  bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
+  std::string config_text;  ///< the effective settings as INI text, stored in the history
+  std::string default_config_text;  ///< every setting at its default, same form (resume check)
+  int rank_count = 1;               ///< MPI ranks of the run, stored in the history
+  int checkpoint_every = 0;         ///< checkpoint every this many generations (0: no cadence)
   double checkpoint_minutes = 1;  ///< ... or when this many minutes passed since the last (0: off)
   double max_hours = 0;           ///< stop cleanly before this wall time (0: no limit)
   bool fresh = false;             ///< ignore and remove an existing checkpoint, start over

@@ -520,9 +520,11 @@ std::string resultConfigHash(const std::string& config_text) {
 }
 
 void checkResumeSettings(const std::string& path, const std::string& saved_config_text,
-                         const std::string& current_config_text) {
+                         const std::string& current_config_text,
+                         const std::string& default_config_text) {
   std::map<std::string, std::string> saved = settingsOfConfigText(saved_config_text);
   std::map<std::string, std::string> current = settingsOfConfigText(current_config_text);
+  std::map<std::string, std::string> defaults = settingsOfConfigText(default_config_text);
 
   // every key of either side, in order
   std::set<std::string> keys;
@@ -535,6 +537,11 @@ void checkResumeSettings(const std::string& path, const std::string& saved_confi
       continue;
     auto old_value = saved.find(key);
     auto new_value = current.find(key);
+    // a key added since the checkpoint, left at its default: the old behaviour
+    auto default_value = defaults.find(key);
+    if (old_value == saved.end() && new_value != current.end() && default_value != defaults.end() &&
+        default_value->second == new_value->second)
+      continue;
     std::string before = old_value == saved.end() ? "(absent)" : "'" + old_value->second + "'";
     std::string after = new_value == current.end() ? "(absent)" : "'" + new_value->second + "'";
     if (before != after) {

@@ -85,8 +85,11 @@ std::string resultConfigHash(const std::string& config_text);
 
 /// Compares the settings of a checkpoint with the current ones, key by key. Throws
 /// Error(checkpoint) naming `path`, the first differing key that affects results, its old and its
-/// new value, when one differs.
+/// new value, when one differs. A key the checkpoint lacks is no change when its current value is
+/// its default in `default_config_text` (a setting added after the checkpoint was written, whose
+/// default is how the older cambrian behaved).
 void checkResumeSettings(const std::string& path, const std::string& saved_config_text,
-                         const std::string& current_config_text);
+                         const std::string& current_config_text,
+                         const std::string& default_config_text = "");
 
 }  // namespace cambrian

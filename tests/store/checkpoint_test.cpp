@@ -354,6 +354,19 @@ TEST(CheckpointSettings, RunOnlyKeysMayChangeOthersMayNot) {
   std::tie(code, message) =
       failure([&] { checkResumeSettings("ck.h5", kConfig, kConfig + "\n[task]\nname = walk\n"); });
   EXPECT_NE(message.find("task.name was (absent)"), std::string::npos) << message;
+
+  // a key added since the checkpoint: no change at its default, a change at another value
+  std::string defaults = kConfig + "\n[task]\nrest_check = false\n";
+  EXPECT_NO_THROW(checkResumeSettings("ck.h5", kConfig, defaults, defaults));
+  std::tie(code, message) = failure([&] {
+    checkResumeSettings("ck.h5", kConfig, kConfig + "\n[task]\nrest_check = true\n", defaults);
+  });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("task.rest_check was (absent)"), std::string::npos) << message;
+  // a key the current settings lack is a change whatever the defaults say
+  std::tie(code, message) =
+      failure([&] { checkResumeSettings("ck.h5", defaults, kConfig, defaults); });
+  EXPECT_NE(message.find("task.rest_check was 'false'"), std::string::npos) << message;
 }
 
 TEST(CheckpointSettings, ParsesConfigText) {
