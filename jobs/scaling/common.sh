@@ -32,6 +32,7 @@ options:
   --force             replace an existing sweep directory of the same name
   --no-analysis       only run, do not call the analysis scripts
   -h, --help          this text
+  -- OPTIONS          the rest goes to every \`cambrian evolve\` (e.g. -- --run.dispatch_order shuffled)
 exit codes: 0 ok, 2 usage, otherwise the failing run's exit code (docs/exit-codes.md)
 USAGE
 }
@@ -39,6 +40,7 @@ USAGE
 # defaults (small: this must finish on a 2-core machine)
 workers="1 2" repeats=3 generations=5 population=300 per_worker=100 task=synthetic cost_us=10000
 config="" seed=1 name="" out_root=runs/scaling binary="" launcher=mpirun oversubscribe="" force=0 analysis=1
+evolve_extra=()
 die_usage() { echo "$MODE.sh: error: $*" >&2; echo "try: jobs/scaling/$MODE.sh --help" >&2; exit 2; }
 need() { if [ $# -lt 2 ] || [ -z "$2" ]; then die_usage "$1 needs a value"; fi; }
 
@@ -62,6 +64,7 @@ while [ $# -gt 0 ]; do
     --force) force=1; shift ;;
     --no-analysis) analysis=0; shift ;;
     -h|--help) usage; exit 0 ;;
+    --) shift; evolve_extra=("$@"); break ;;
     *) die_usage "unknown option '$1'" ;;
   esac
 done
@@ -102,7 +105,7 @@ fi
 mkdir -p "$sweep"
 export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}
 {
-  echo "mode $MODE  task $task  config $config  workers '$workers'  repeats $repeats  generations $generations"
+  echo "mode $MODE  task $task  config $config  workers '$workers'  repeats $repeats  generations $generations  evolve options '${evolve_extra[*]}'"
   echo "binary $binary  host $(hostname)  cores $(nproc)  load $(cut -d' ' -f1-3 /proc/loadavg)  date $(date -u +%FT%TZ)"
 } | tee "$sweep/sweep.txt"
 
@@ -117,7 +120,7 @@ for w in $workers; do
     # shellcheck disable=SC2086
     "$launcher" -np $((w + 1)) $oversubscribe "$binary" evolve --config "$config" \
       "${task_options[@]}" --evolution.population "$pop" --evolution.generations "$generations" \
-      --seed "$seed" --quiet --out "$out" > "$out/run.log" 2>&1 || rc=$?
+      --seed "$seed" --quiet --out "$out" "${evolve_extra[@]}" > "$out/run.log" 2>&1 || rc=$?
     if [ "$rc" -ne 0 ]; then
       echo "$MODE.sh: run w$w r$r failed with exit code $rc; see $out/run.log" >&2
       tail -5 "$out/run.log" >&2
