@@ -210,18 +210,20 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
         historyChunkRows(static_cast<std::uint64_t>(settings.population)));
   }
 
-  // the checkpoint of the last evaluated generation; its time goes into that generation's row
+  // the last evaluated generation's checkpoint (`next_id` and `digest` as they were when it
+  // ended); its time goes into that generation's row
   std::uint64_t checkpointed = start;
   auto checkpoint_time = Clock::now();
   double checkpoint_seconds_max = 0;
-  auto writeRunCheckpoint = [&](std::uint64_t next_generation) -> double {
+  auto writeRunCheckpoint = [&](std::uint64_t next_generation, std::uint64_t next_id,
+                                std::uint64_t digest_value) -> double {
     auto begin = Clock::now();
     CheckpointState state;
     state.config_text = run.config_text;
     state.seed = settings.seed;
     state.next_generation = next_generation;
-    state.next_id = breeder.nextId();
-    state.digest = digest.value();
+    state.next_id = next_id;
+    state.digest = digest_value;
     state.rank_count = run.rank_count;
     state.population = *last;
     writeCheckpoint(run.out_dir, state, [&](const std::string& stage) {
@@ -235,23 +237,59 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     return seconds;
   };
 
-  // the last generation's timings, from its start to now: breeding, evaluation, the history
-  // append and any checkpoint (rewritten in its history row, which was appended before them)
+  // a generation's times run from the start of its breeding to the start of the next one's (the
+  // last one's: to the end of its history append and checkpoint), so consecutive rows tile the
+  // run; its serial time is what of that lies outside its evaluation span
   auto generation_start = Clock::now();
   double generation_cpu_start = 0;
-  auto completeGeneration = [&](GenerationRecord& record, double checkpoint_seconds) {
+  auto closeTimes = [&](GenerationRecord& record) {
     record.wall_seconds = secondsSince(generation_start);
     record.rank0_cpu_seconds = processCpuSeconds() - generation_cpu_start;
     record.rank0_serial_seconds =
         std::max(0.0, record.wall_seconds - record.evaluation_span_seconds);
-    if (history) {
-      GenerationTimes times;
-      times.rank0_serial_seconds = record.rank0_serial_seconds;
-      times.rank0_cpu_seconds = record.rank0_cpu_seconds;
-      times.checkpoint_seconds = checkpoint_seconds;
-      times.wall_seconds = record.wall_seconds;
-      history->completeLastGeneration(times);
-    }
+  };
+
+  // the last evaluated generation until it is in the history: written, with its checkpoint when
+  // one is due, while the next generation evaluates (the workers never wait for the file
+  // system), or at the end or a clean stop, when nothing is left to overlap
+  struct Pending {
+    std::size_t record = 0;  // index into result.generations
+    std::uint64_t next_id = 0;
+    std::uint64_t digest = 0;
+  };
+  std::optional<Pending> pending;
+  const auto total = static_cast<std::uint64_t>(std::max(settings.generations, 0));
+  auto writePending = [&](bool final_write) {
+    if (!pending || !history)
+      return;
+    GenerationRecord& record = result.generations[pending->record];
+    if (final_write)
+      closeTimes(record);
+    std::uint64_t g = record.generation;
+    std::vector<HistoryIndividual> history_rows;
+    for (const Individual& individual : last->individuals)
+      history_rows.push_back(makeHistoryIndividual(individual));
+    history->appendGeneration(history_rows, makeHistoryGeneration(record, *last));
+    testKillPoint("history", g);
+
+    // a checkpoint every checkpoint_every generations or checkpoint_minutes, and at the end
+    bool due = final_write || g + 1 == total ||
+               (run.checkpoint_every > 0 &&
+                g + 1 - checkpointed >= static_cast<std::uint64_t>(run.checkpoint_every)) ||
+               (run.checkpoint_minutes > 0 &&
+                secondsSince(checkpoint_time) >= run.checkpoint_minutes * 60);
+    double checkpoint_seconds =
+        due ? writeRunCheckpoint(g + 1, pending->next_id, pending->digest) : 0;
+    // the last generation's times include its append and checkpoint
+    if (final_write)
+      closeTimes(record);
+    GenerationTimes times;
+    times.rank0_serial_seconds = record.rank0_serial_seconds;
+    times.rank0_cpu_seconds = record.rank0_cpu_seconds;
+    times.checkpoint_seconds = checkpoint_seconds;
+    times.wall_seconds = record.wall_seconds;
+    history->completeLastGeneration(times);
+    pending.reset();
   };
 
   // why the run should stop before generation g ("" to go on)
@@ -277,32 +315,30 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     return "";
   };
 
-  const auto total = static_cast<std::uint64_t>(std::max(settings.generations, 0));
   std::string stop_reason;
   std::uint64_t g = start;
   for (; g < total; ++g) {
-    // a clean stop: the last generation checkpointed, then out
+    // a clean stop: the last generation written and checkpointed, then out
     stop_reason = stopReason(g);
-    if (!stop_reason.empty()) {
-      // the stop's checkpoint belongs to the generation before it (one of this run's, or the
-      // checkpoint's own generation, already checkpointed)
-      if (history && last && checkpointed != g) {
-        double seconds = writeRunCheckpoint(g);
-        if (g > start) {
-          completeGeneration(result.generations.back(), seconds);
-          walls.back() = result.generations.back().wall_seconds - seconds;
-        }
-      }
+    if (!stop_reason.empty())
       break;
+
+    // the previous generation ends here: its times are complete
+    if (pending) {
+      GenerationRecord& previous = result.generations[pending->record];
+      closeTimes(previous);
+      walls.back() = previous.wall_seconds;
     }
     generation_start = Clock::now();
     generation_cpu_start = processCpuSeconds();
 
-    // breed (generation 0: the initial population), then evaluate what is new
+    // breed (generation 0: the initial population), then evaluate what is new while the
+    // previous generation goes to the history
     Population population = last ? breeder.nextGeneration(*last) : breeder.initialPopulation(seeds);
-    EvaluationSpan span = evaluator.evaluate(population, settings.seed);
+    EvaluationSpan span =
+        evaluator.evaluate(population, settings.seed, [&] { writePending(false); });
 
-    // summarise in id order
+    // summarise in id order (the times so far; closed when the next generation starts)
     GenerationRecord record;
     record.generation = population.generation;
     record.stats = computeStats(population);
@@ -315,30 +351,11 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
         std::max(0.0, span.workers * span.span_seconds - span.busy_seconds);
     digest.add(population);
     appendRecords(population, result.individuals);
-    record.wall_seconds = secondsSince(generation_start);
-    record.rank0_cpu_seconds = processCpuSeconds() - generation_cpu_start;
-    record.rank0_serial_seconds = std::max(0.0, record.wall_seconds - span.span_seconds);
-
-    // append and flush the generation to the history
-    if (history) {
-      std::vector<HistoryIndividual> history_rows;
-      for (const Individual& individual : population.individuals)
-        history_rows.push_back(makeHistoryIndividual(individual));
-      history->appendGeneration(history_rows, makeHistoryGeneration(record, population));
-      testKillPoint("history", g);
-    }
+    closeTimes(record);
     last = std::move(population);
-
-    // a checkpoint every checkpoint_every generations or checkpoint_minutes, and at the end
-    bool due = g + 1 == total ||
-               (run.checkpoint_every > 0 &&
-                g + 1 - checkpointed >= static_cast<std::uint64_t>(run.checkpoint_every)) ||
-               (run.checkpoint_minutes > 0 &&
-                secondsSince(checkpoint_time) >= run.checkpoint_minutes * 60);
-    double checkpoint_seconds = history && due ? writeRunCheckpoint(g + 1) : 0;
-    completeGeneration(record, checkpoint_seconds);
     result.generations.push_back(record);
-    walls.push_back(record.wall_seconds - checkpoint_seconds);
+    walls.push_back(record.wall_seconds);
+    pending = Pending{result.generations.size() - 1, breeder.nextId(), digest.value()};
 
     // progress
     double elapsed = secondsSince(run_start);
@@ -357,6 +374,9 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
       out << detail << std::endl;
     }
   }
+
+  // the last generation into the history, checkpointed (a resume that stops at once has none)
+  writePending(true);
 
   // digest, timings and the tables
   result.stopped = !stop_reason.empty();

@@ -94,7 +94,11 @@ std::vector<std::size_t> schedulingOrder(const Population& population,
   return order;
 }
 
-EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_t run_seed) {
+EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_t run_seed,
+                                            const std::function<void()>& meanwhile) {
+  // nothing runs alongside: rank 0's other work first, outside the span
+  if (meanwhile)
+    meanwhile();
   EvaluationSpan span;
   span.workers = 1;
   auto start = Clock::now();
@@ -125,7 +129,8 @@ int MpiScheduler::workers() const {
   return mpi_.size() - 1;
 }
 
-EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_seed) {
+EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_seed,
+                                      const std::function<void()>& meanwhile) {
   EvaluationSpan span;
   span.workers = workers();
   std::vector<std::size_t> order = schedulingOrder(population, dispatch_, run_seed);
@@ -164,6 +169,12 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     }
   }
   span.dispatch_seconds += since(dispatch_start);
+
+  // rank 0's own work while every worker has creatures in hand
+  if (meanwhile) {
+    mpi_.completePosted();
+    meanwhile();
+  }
 
   // every result is answered with the next creature; wait by probe + sleep
   Message message;

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -61,7 +62,11 @@ class PopulationEvaluator {
  public:
   virtual ~PopulationEvaluator() = default;
   /// Fills outcome, evaluated, eval_seconds and worker_rank of each unevaluated individual.
-  virtual EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) = 0;
+  /// `meanwhile` (when set) is called once while the workers evaluate — rank 0's own work that
+  /// need not hold them up, such as writing the previous generation to the history — or, with no
+  /// workers to overlap, before evaluating.
+  virtual EvaluationSpan evaluate(Population& population, std::uint64_t run_seed,
+                                  const std::function<void()>& meanwhile = {}) = 0;
   /// Ranks that evaluate.
   virtual int workers() const = 0;
 };
@@ -72,7 +77,8 @@ class InProcessEvaluator : public PopulationEvaluator {
   /// `settings` are the creature settings every evaluation uses; `dispatch` the order.
   explicit InProcessEvaluator(const WorkerSettings& settings, const DispatchSettings& dispatch = {})
       : settings_(settings), dispatch_(dispatch) {}
-  EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) override;
+  EvaluationSpan evaluate(Population& population, std::uint64_t run_seed,
+                          const std::function<void()>& meanwhile = {}) override;
   int workers() const override { return 1; }
 
  private:
@@ -97,7 +103,9 @@ class MpiScheduler : public PopulationEvaluator {
   /// schedulingOrder(population, dispatch, run seed); `in_flight` >= 1.
   explicit MpiScheduler(MpiContext& mpi, const DispatchSettings& dispatch = {},
                         int in_flight = kDefaultInFlight);
-  EvaluationSpan evaluate(Population& population, std::uint64_t run_seed) override;
+  /// `meanwhile` runs once every worker holds its first creatures.
+  EvaluationSpan evaluate(Population& population, std::uint64_t run_seed,
+                          const std::function<void()>& meanwhile = {}) override;
   int workers() const override;
   /// Sends the stop message to every worker (once; later calls do nothing).
   void stopWorkers();
