@@ -210,8 +210,8 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
         historyChunkRows(static_cast<std::uint64_t>(settings.population)));
   }
 
-  // the last evaluated generation's checkpoint (`next_id` and `digest` as they were when it
-  // ended); its time goes into that generation's row
+  // the last evaluated generation's checkpoint (`next_id` as it was when that generation ended,
+  // `digest` over every generation up to it); its time goes into that generation's row
   std::uint64_t checkpointed = start;
   auto checkpoint_time = Clock::now();
   double checkpoint_seconds_max = 0;
@@ -255,13 +255,21 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
   struct Pending {
     std::size_t record = 0;  // index into result.generations
     std::uint64_t next_id = 0;
-    std::uint64_t digest = 0;
   };
   std::optional<Pending> pending;
+  std::optional<Population> retired;  // the generation before `last`, freed in the same slot
   const auto total = static_cast<std::uint64_t>(std::max(settings.generations, 0));
-  auto writePending = [&](bool final_write) {
-    if (!pending || !history)
+  auto finishPending = [&](bool final_write) {
+    if (!pending)
       return;
+    // the run digest over it and the freeing of the generation before: a millisecond or two of
+    // hashing and freeing that the workers need not wait for either
+    digest.add(*last);
+    retired.reset();
+    if (!history) {
+      pending.reset();
+      return;
+    }
     GenerationRecord& record = result.generations[pending->record];
     if (final_write)
       closeTimes(record);
@@ -279,7 +287,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
                (run.checkpoint_minutes > 0 &&
                 secondsSince(checkpoint_time) >= run.checkpoint_minutes * 60);
     double checkpoint_seconds =
-        due ? writeRunCheckpoint(g + 1, pending->next_id, pending->digest) : 0;
+        due ? writeRunCheckpoint(g + 1, pending->next_id, digest.value()) : 0;
     // the last generation's times include its append and checkpoint
     if (final_write)
       closeTimes(record);
@@ -336,7 +344,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     // previous generation goes to the history
     Population population = last ? breeder.nextGeneration(*last) : breeder.initialPopulation(seeds);
     EvaluationSpan span =
-        evaluator.evaluate(population, settings.seed, [&] { writePending(false); });
+        evaluator.evaluate(population, settings.seed, [&] { finishPending(false); });
 
     // summarise in id order (the times so far; closed when the next generation starts)
     GenerationRecord record;
@@ -349,13 +357,13 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     record.worker_busy_seconds = span.busy_seconds;
     record.worker_idle_seconds =
         std::max(0.0, span.workers * span.span_seconds - span.busy_seconds);
-    digest.add(population);
     appendRecords(population, result.individuals);
     closeTimes(record);
+    retired = std::move(last);
     last = std::move(population);
     result.generations.push_back(record);
     walls.push_back(record.wall_seconds);
-    pending = Pending{result.generations.size() - 1, breeder.nextId(), digest.value()};
+    pending = Pending{result.generations.size() - 1, breeder.nextId()};
 
     // progress
     double elapsed = secondsSince(run_start);
@@ -376,7 +384,7 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
   }
 
   // the last generation into the history, checkpointed (a resume that stops at once has none)
-  writePending(true);
+  finishPending(true);
 
   // digest, timings and the tables
   result.stopped = !stop_reason.empty();
