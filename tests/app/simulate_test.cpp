@@ -2,6 +2,7 @@
 #include "cambrian/error.hpp"
 
 #include "app/cli.hpp"
+#include "genome/cuts.hpp"
 
 #include <gtest/gtest.h>
 
@@ -155,15 +156,7 @@ TEST(SimulateCommand, InvalidGenomeFileNamesFileAndField) {
 TEST(SimulateCommand, TruncatedGenomeFileIsRefused) {
   std::ifstream in(kCreatures + "walker4.genome", std::ios::binary);
   const std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::set<std::size_t> cuts;
-  for (std::size_t at = 0; at + 1 < whole.size(); at += 37)
-    cuts.insert(at);
-  for (std::size_t at = 0; at + 1 < whole.size(); ++at) {
-    if (whole[at] == '\n')
-      cuts.insert(at + 1);
-  }
-  cuts.erase(whole.size());
-  cuts.erase(whole.size() - 1);  // all but the final newline: the whole file
+  std::set<std::size_t> cuts = test::truncationPoints(whole);
   ASSERT_GT(cuts.size(), 60u);
   const std::string path = std::string(CAMBRIAN_BINARY_DIR) + "/simulate_cut.genome";
   for (std::size_t cut : cuts) {

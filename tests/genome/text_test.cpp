@@ -1,6 +1,8 @@
 #include "cambrian/error.hpp"
 #include "cambrian/genome.hpp"
 
+#include "genome/cuts.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -235,15 +237,7 @@ TEST(GenomeText, TruncatedFilesAreRefused) {
   ASSERT_NO_THROW(readGenomeFile(source));
 
   // every cut that loses at least the `d` of the final `end` (the last byte is its newline)
-  std::set<std::size_t> cuts;
-  for (std::size_t at = 0; at + 1 < whole.size(); at += 37)
-    cuts.insert(at);
-  for (std::size_t at = 0; at + 1 < whole.size(); ++at) {
-    if (whole[at] == '\n')
-      cuts.insert(at + 1);
-  }
-  cuts.erase(whole.size());
-  cuts.erase(whole.size() - 1);
+  std::set<std::size_t> cuts = test::truncationPoints(whole);
   ASSERT_GT(cuts.size(), 60u);
 
   const std::filesystem::path path =
