@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Where an evaluation's instructions go: callgrind on a 10 s walk of a 5-part creature and of
-# a few random creatures, summed by shared object (analysis/callgrind_share.py).
+# Where an evaluation's instructions go: callgrind on a 10 s walk of the 5-part walker and the
+# 6-part snake (jobs/creatures), summed by shared object (analysis/callgrind_share.py).
+# Needs valgrind (Debian package valgrind; not installed by jobs/setup/install-deps.sh).
 # Usage: bash jobs/bench/bullet_share.sh [path/to/cambrian]   (default: build/release)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
