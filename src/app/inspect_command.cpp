@@ -37,12 +37,13 @@ int runInspect(int argc, char** argv) {
   po::positional_options_description positional;
   positional.add("genome", 1);
   po::options_description creature = creatureOptions(settings);
-  po::variables_map vm = parseOptions(argc, argv, cli, creature, &positional);
+  OptionOrigins origins;
+  po::variables_map vm = parseOptions(argc, argv, cli, creature, &positional, "config", &origins);
   if (vm.count("help")) {
     std::cout << cli << "\n" << creature << "\n";
     return 0;
   }
-  finishCreatureSettings(settings);
+  finishCreatureSettings(settings, origins);
   if (genome_path.empty())
     throw Error(ExitCode::usage, "give a genome file to inspect");
 

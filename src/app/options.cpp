@@ -341,6 +341,14 @@ po::variables_map parseOptions(int argc, const char* const* argv,
   return vm;
 }
 
+void finishCreatureSettings(CreatureSettings& settings, const OptionOrigins& origins) {
+  try {
+    finishCreatureSettings(settings);
+  } catch (const ConfigError& e) {
+    throw ConfigError(locateSettingError(e.what(), origins));
+  }
+}
+
 std::string locateSettingError(const std::string& message, const OptionOrigins& origins) {
   std::string key = message.substr(0, message.find(" = "));
   if (origins.config_file.count(key) && !origins.config_path.empty())

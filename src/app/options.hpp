@@ -57,6 +57,8 @@ po::options_description creatureOptions(CreatureSettings& settings);
 /// Turns the string-valued keys into enums and checks every range; throws ConfigError naming
 /// the key and the value. Call after po::notify().
 void finishCreatureSettings(CreatureSettings& settings);
+/// The same, the error naming also where the bad value came from (locateSettingError).
+void finishCreatureSettings(CreatureSettings& settings, const OptionOrigins& origins);
 
 /// Parses the command line and then, when `config_path` is non-empty, the INI file (command line
 /// wins). Unknown keys are errors: a ConfigError naming the file and key, or a usage Error.

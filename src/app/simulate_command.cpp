@@ -16,7 +16,7 @@ namespace cambrian {
 int runSimulate(int argc, char** argv) {
   CreatureSettings settings;
   std::string genome_path, config_path, task_name, save_path, export_path;
-  std::uint64_t seed = 1;
+  SeedValue seed_option{1};
   double frame_rate = 30;
 
   // command-line-only options; settings come from creatureOptions()
@@ -27,8 +27,9 @@ int runSimulate(int argc, char** argv) {
       "Options");
   cli.add_options()("help,h", "show this help")("genome,g", po::value(&genome_path),
                                                 "genome file (text or binary)")(
-      "random", "evaluate a random genome instead")("seed", po::value(&seed)->default_value(seed),
-                                                    "seed of the random genome and evaluation")(
+      "random", "evaluate a random genome instead")(
+      "seed", po::value(&seed_option)->default_value(seed_option),
+      "seed of the random genome and evaluation")(
       "task", po::value(&task_name), "task: walk | jump | synthetic (same as --task.name)")(
       "config,c", po::value(&config_path), "INI file with settings (command line wins)")(
       "save", po::value(&save_path), "write the evaluated genome to this file (text form)")(
@@ -37,20 +38,25 @@ int runSimulate(int argc, char** argv) {
       "frame-rate", po::value(&frame_rate)->default_value(frame_rate),
       "frames per simulated second in the export, Hz");
   po::options_description creature = creatureOptions(settings);
-  po::variables_map vm = parseOptions(argc, argv, cli, creature, nullptr);
+  OptionOrigins origins;
+  po::variables_map vm = parseOptions(argc, argv, cli, creature, nullptr, "config", &origins);
   if (vm.count("help")) {
     std::cout << cli << "\n" << creature << "\n";
     return 0;
   }
-  if (!task_name.empty())
+  if (!task_name.empty()) {
     settings.task_name = task_name;
-  finishCreatureSettings(settings);
+    origins.command_line.insert("task.name");
+    origins.config_file.erase("task.name");
+  }
+  finishCreatureSettings(settings, origins);
 
   // the creature
   bool random = vm.count("random") > 0;
   if (random == !genome_path.empty()) {
     throw Error(ExitCode::usage, "give exactly one of --genome FILE or --random");
   }
+  const std::uint64_t seed = seed_option.value;
   Genome genome = random ? randomGenome(settings.limits, seed) : readGenomeFile(genome_path);
 
   // a genome file given by the user is checked against the limits, naming the file (a random

@@ -102,7 +102,7 @@ TEST(SimulateCommand, BadInput) {
   EXPECT_NE(range.output.find("physics.time_step = -1"), std::string::npos) << range.output;
 
   auto wrong_type = runCambrian("simulate --random --task.evaluation_time ten");
-  EXPECT_NE(wrong_type.exit_code, 0);
+  EXPECT_EQ(wrong_type.exit_code, code(ExitCode::usage));
   EXPECT_NE(wrong_type.output.find("evaluation_time"), std::string::npos) << wrong_type.output;
 
   auto missing = runCambrian("simulate --genome /nonexistent/x.genome");
@@ -115,6 +115,21 @@ TEST(SimulateCommand, BadInput) {
   EXPECT_EQ(unknown_key.exit_code, code(ExitCode::config));
   EXPECT_NE(unknown_key.output.find(bad_ini), std::string::npos) << unknown_key.output;
   EXPECT_NE(unknown_key.output.find("warp_drive"), std::string::npos) << unknown_key.output;
+
+  // an impossible value in the file names the file; on the command line, the command line
+  std::string range_ini = std::string(CAMBRIAN_BINARY_DIR) + "/simulate_range.ini";
+  std::ofstream(range_ini) << "[physics]\ntime_step = -1\n";
+  auto in_file = runCambrian("simulate --random --config " + range_ini);
+  EXPECT_EQ(in_file.exit_code, code(ExitCode::config));
+  EXPECT_NE(in_file.output.find(range_ini + ": physics.time_step = -1"), std::string::npos)
+      << in_file.output;
+  EXPECT_NE(range.output.find("command line: --physics.time_step = -1"), std::string::npos)
+      << range.output;
+
+  // a seed is a whole number from 0 (a negative one would wrap around)
+  auto negative_seed = runCambrian("simulate --random --seed -2");
+  EXPECT_EQ(negative_seed.exit_code, code(ExitCode::usage));
+  EXPECT_NE(negative_seed.output.find("'-2'"), std::string::npos) << negative_seed.output;
 
   std::string truncated = std::string(CAMBRIAN_BINARY_DIR) + "/truncated.genome";
   std::ofstream(truncated, std::ios::binary) << "CMBG\x01";
