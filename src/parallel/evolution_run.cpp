@@ -280,8 +280,9 @@ RunResult runEvolution(const EvolutionSettings& settings, const GenomeLimits& li
     history->appendGeneration(history_rows, makeHistoryGeneration(record, *last));
     testKillPoint("history", g);
 
-    // a checkpoint every checkpoint_every generations or checkpoint_minutes, and at the end
-    bool due = final_write || g + 1 == total ||
+    // a checkpoint every checkpoint_every generations or checkpoint_minutes, after the first
+    // (a history never holds generations without one for long) and at the end
+    bool due = final_write || g == 0 || g + 1 == total ||
                (run.checkpoint_every > 0 &&
                 g + 1 - checkpointed >= static_cast<std::uint64_t>(run.checkpoint_every)) ||
                (run.checkpoint_minutes > 0 &&

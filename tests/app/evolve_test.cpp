@@ -136,6 +136,24 @@ TEST(EvolveCommand, AHistoryWithoutACheckpointIsNeverOverwritten) {
   EXPECT_EQ(fresh.exit_code, 0) << fresh.output;
 }
 
+TEST(EvolveCommand, AJobKilledInItsFirstMinuteContinuesFromGeneration0) {
+  // default cadence (a minute): killed during generation 1, a few milliseconds in
+  std::string dir = freshDir("killed_early");
+  auto killed = runCambrian(tinyRun(dir, 3) + " --run.test_kill_at evaluation:1");
+  EXPECT_NE(killed.exit_code, 0) << killed.output;
+  ASSERT_TRUE(std::filesystem::exists(dir + "/checkpoint.h5"));
+
+  // the same command continues after generation 0 and ends as a straight run does
+  auto resumed = runCambrian(tinyRun(dir, 3));
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("at generation 1"), std::string::npos) << resumed.output;
+  std::string straight_dir = freshDir("killed_early_straight");
+  auto straight = runCambrian(tinyRun(straight_dir, 3));
+  std::string digest = test::lineStartingWith(straight.output, "digest ");
+  ASSERT_FALSE(digest.empty()) << straight.output;
+  EXPECT_EQ(test::lineStartingWith(resumed.output, "digest "), digest);
+}
+
 TEST(EvolveCommand, ASecondRunOnTheSameDirectoryIsRefused) {
   std::string dir = freshDir("locked");
   // another process (this test) holds the directory's lock

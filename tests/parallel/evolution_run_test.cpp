@@ -164,8 +164,8 @@ TEST(EvolutionRun, GenerationTimesTileTheRunAndHoldEveryCheckpoint) {
   EXPECT_EQ(checkpointed(dir), (std::vector<bool>{true}));
 }
 
-TEST(EvolutionRun, TheDefaultCadenceIsAMinuteAndTheLastGeneration) {
-  // generations far shorter than a minute: only the last one is followed by a checkpoint
+TEST(EvolutionRun, TheDefaultCadenceIsTheFirstGenerationAMinuteAndTheLast) {
+  // generations far shorter than a minute: only the first and the last have a checkpoint
   RunSettings defaults;
   EXPECT_EQ(defaults.checkpoint_every, 0);
   EXPECT_EQ(defaults.checkpoint_minutes, 1.0);
@@ -173,7 +173,7 @@ TEST(EvolutionRun, TheDefaultCadenceIsAMinuteAndTheLastGeneration) {
   std::string dir = testing::TempDir() + "/cambrian_evolution_run_test_cadence";
   RunResult result = runOnce(dir, out, true, 4);
   expectCompleteTimes(dir, result);
-  EXPECT_EQ(checkpointed(dir), (std::vector<bool>{false, false, false, true}));
+  EXPECT_EQ(checkpointed(dir), (std::vector<bool>{true, false, false, true}));
 
   // a cadence by the clock that has already passed: every generation
   RunSettings clock;
