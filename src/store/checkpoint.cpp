@@ -447,9 +447,8 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir) {
       throw Error(ExitCode::checkpoint,
                   history + ": holds " + std::to_string(generations.size()) +
                       " generation(s) but there is no " + path +
-                      " to continue from (the run stopped before its first checkpoint; "
-                      "run.checkpoint_every and run.checkpoint_minutes set the cadence): nothing "
-                      "was changed" +
+                      " to continue from (the run stopped before its first checkpoint was "
+                      "written): nothing was changed" +
                       fresh);
   }
   return std::nullopt;
