@@ -291,8 +291,7 @@ Setup parse(int argc, char** argv, bool read_seeds) {
   // short forms win over the long keys, in the settings and in the stored settings text
   auto shortForm = [&](const char* key, const boost::any& value) {
     vm.at(key).value() = value;
-    origins.command_line.insert(key);
-    origins.config_file.erase(key);
+    origins.setOnCommandLine(key);
   };
   if (vm.count("seed")) {
     s.seed = seed;

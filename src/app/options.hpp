@@ -44,6 +44,11 @@ struct OptionOrigins {
   std::set<std::string> command_line;
   std::set<std::string> config_file;
   std::string config_path;
+  /// `key` now has a value from the command line (a short form such as --seed that sets it).
+  void setOnCommandLine(const std::string& key) {
+    command_line.insert(key);
+    config_file.erase(key);
+  }
 };
 
 /// A ConfigError message about a setting ("key = value: rule"), prefixed with where the value

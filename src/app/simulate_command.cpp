@@ -46,8 +46,7 @@ int runSimulate(int argc, char** argv) {
   }
   if (!task_name.empty()) {
     settings.task_name = task_name;
-    origins.command_line.insert("task.name");
-    origins.config_file.erase("task.name");
+    origins.setOnCommandLine("task.name");
   }
   finishCreatureSettings(settings, origins);
 

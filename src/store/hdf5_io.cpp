@@ -86,6 +86,14 @@ Handle openFile(const std::string& path, const char* kind, bool swmr, std::strin
   return file;
 }
 
+Handle openFileForSwmrWriting(const std::string& path) {
+  // newest format bounds (SWMR needs them), no file lock
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_libver_bounds(access.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
+  H5Pset_file_locking(access.get(), false, true);
+  return Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR | H5F_ACC_SWMR_WRITE, access.get()), H5Fclose);
+}
+
 bool writeString(hid_t location, const char* name, const std::string& value) {
   // a scalar attribute holding one pointer to the text
   Handle type = stringType();

@@ -79,6 +79,11 @@ Handle createFile(const std::string& path, H5F_libver_t oldest);
 /// missing, not a regular file, without the HDF5 signature, unreadable, truncated or corrupt.
 Handle openFile(const std::string& path, const char* kind, bool swmr, std::string& problem);
 
+/// Reopens the existing cambrian file `path` (written in the newest format) for SWMR writing,
+/// without HDF5's file lock, so that a reader holding the file open does not stop the writer
+/// (the caller keeps other writers out); an invalid handle on failure.
+Handle openFileForSwmrWriting(const std::string& path);
+
 /// Writes a scalar variable-length string attribute; false on failure (the caller names the
 /// file).
 bool writeString(hid_t location, const char* name, const std::string& value);

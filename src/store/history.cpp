@@ -358,12 +358,9 @@ struct HistoryWriter::Impl {
   bool openFile(const std::string& path) {
     if (file.valid())
       return true;
-    // newest format (SWMR needs it); no HDF5 file lock, so a reader holding the file open
-    // (HDFView, h5dump) never stops the run: the run's own lock keeps other writers out
-    Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-    H5Pset_libver_bounds(access.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
-    H5Pset_file_locking(access.get(), false, true);
-    file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR | H5F_ACC_SWMR_WRITE, access.get()), H5Fclose);
+    // no HDF5 file lock, so a reader holding the file open (HDFView, h5dump) never stops the
+    // run: the run's own lock (run.lock) keeps other writers out
+    file = openFileForSwmrWriting(path);
     if (!file.valid())
       return false;
     auto openAll = [&](const char* group, const std::vector<Column>& columns,

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 
 namespace cambrian {
 
@@ -21,30 +20,6 @@ double spin(double x, int rounds) {
 }
 
 }  // namespace
-
-double portableExp(double x) {
-  // the ends of the range, where the result is no longer a normal number
-  if (std::isnan(x))
-    return x;
-  if (x > 709.78)
-    return std::numeric_limits<double>::infinity();
-  if (x < -745.2)
-    return 0;
-
-  // x = k ln2 + r with |r| <= ln2 / 2 (ln2 in two parts, fdlibm's: k * ln2_hi is exact)
-  constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
-  constexpr double inv_ln2 = 1.44269504088896338700e+00;
-  double k = std::floor(x * inv_ln2 + 0.5);
-  double r = (x - k * ln2_hi) - k * ln2_lo;
-
-  // e^r by its Taylor series to r^16 / 16! (below 1e-20 for |r| <= 0.35), Horner's scheme
-  constexpr int terms = 16;
-  double sum = 1;
-  for (int n = terms; n >= 1; --n)
-    sum = 1 + sum * r / n;
-  // times 2^k, exact
-  return std::ldexp(sum, static_cast<int>(k));
-}
 
 double syntheticCostMicroseconds(const Genome& genome, const TaskSettings& task,
                                  std::uint64_t eval_seed) {
@@ -62,7 +37,7 @@ double syntheticCostMicroseconds(const Genome& genome, const TaskSettings& task,
     case SyntheticDistribution::lognormal: {
       double variance = std::log(1 + task.synthetic_cv * task.synthetic_cv);
       if (variance > 0)
-        factor = portableExp(std::sqrt(variance) * rng.normal() - variance / 2);
+        factor = std::exp(std::sqrt(variance) * rng.normal() - variance / 2);
       break;
     }
     case SyntheticDistribution::fixed:

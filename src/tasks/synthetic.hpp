@@ -21,11 +21,6 @@ namespace cambrian {
 double syntheticCostMicroseconds(const Genome& genome, const TaskSettings& task,
                                  std::uint64_t eval_seed);
 
-/// e^x from additions, multiplications and a power-of-two scaling only (no libm exp, whose last
-/// bit may differ between C libraries), so a lognormal cost has the same bits on every machine.
-/// Within a few ulps of std::exp; 0 below -745, +inf above 709.78, NaN for NaN.
-double portableExp(double x);
-
 /// The synthetic fitness: a smooth, deterministic function of the genome that evolution can
 /// climb (mean box side of every node plus 0.1 per connection, capped by the node and connection
 /// counts), always >= 0 and finite.

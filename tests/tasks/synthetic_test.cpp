@@ -6,7 +6,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace cambrian {
@@ -157,24 +156,6 @@ TEST(SyntheticTask, LognormalWithoutVariationIsTheMeanCost) {
   task.synthetic_cv = 0;
   for (double x : costs(twoNodes(), task, 100))
     EXPECT_EQ(x, 800.0);
-}
-
-TEST(SyntheticTask, PortableExpAgreesWithTheLibrary) {
-  // a few ulps of std::exp over the range lognormal costs use, and beyond
-  double worst = 0;
-  for (int i = -4000; i <= 4000; ++i) {
-    double x = i * 0.0173;  // -69.2 .. 69.2, not on multiples of ln 2
-    double expected = std::exp(x);
-    worst = std::max(worst, std::abs(portableExp(x) - expected) / expected);
-  }
-  EXPECT_LT(worst, 4 * std::numeric_limits<double>::epsilon());
-  // exact where exact, and the ends of the range
-  EXPECT_EQ(portableExp(0), 1.0);
-  EXPECT_EQ(portableExp(-800), 0.0);
-  EXPECT_EQ(portableExp(800), std::numeric_limits<double>::infinity());
-  EXPECT_TRUE(std::isnan(portableExp(std::numeric_limits<double>::quiet_NaN())));
-  EXPECT_NEAR(portableExp(700) / std::exp(700), 1, 4 * std::numeric_limits<double>::epsilon());
-  EXPECT_NEAR(portableExp(-700) / std::exp(-700), 1, 4 * std::numeric_limits<double>::epsilon());
 }
 
 TEST(SyntheticTask, SpendsAtLeastItsCostAndReportsIt) {
