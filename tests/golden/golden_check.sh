@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# Golden results: digests of whole evolutions and outcomes of single creatures, compared bit for
+# bit with the values checked in beside this script (expected.txt). A change that moves one of
+# them must say so and why, and update expected.txt in the same commit (`--regenerate` prints
+# the new lines).
+# usage: golden_check.sh MODE CAMBRIAN MPIEXEC NPFLAG NP WORKDIR [--regenerate]
+#   synthetic: a synthetic-task evolution at NP ranks (1: in process)
+#   walk:      a walking evolution at NP ranks
+#   variants:  at NP ranks, evolutions through the other code paths: jump, explicit torques,
+#              self-collision, Chaumont's normalisation and rest rule, tournament / rank / sus
+#              selection, unconnected nodes collected, seed genomes
+#   simulate:  `cambrian simulate` on the hand-written creatures and random seeds (walk, jump,
+#              synthetic): status, fitness, every measure and the step count
+# Every name's line in expected.txt is "NAME VALUE"; the same NAME must give the same VALUE at
+# every rank count and in every build type (Debug and Release).
+set -euo pipefail
+mode=$1 cambrian=$2 mpiexec=$3 npflag=$4 np=$5 work=$6 regenerate=${7:-}
+here=$(cd "$(dirname "$0")" && pwd)
+source_dir=$(cd "$here/../.." && pwd)
+expected=$here/expected.txt
+limit=300
+rm -rf "$work" && mkdir -p "$work"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+fail() {
+  echo "FAIL: golden $mode at $np ranks: $*" >&2
+  exit 1
+}
+
+# compares NAME's VALUE with expected.txt (or prints the line with --regenerate)
+failures=0
+check() {
+  local name=$1 value=$2
+  if [ "$regenerate" = "--regenerate" ]; then
+    echo "$name $value"
+    return
+  fi
+  local want
+  want=$(awk -v n="$name" '$1 == n { $1 = ""; sub(/^ /, ""); print; exit }' "$expected")
+  if [ -z "$want" ]; then
+    echo "golden $name: no expected value in $expected (got '$value')" >&2
+    failures=$((failures + 1))
+  elif [ "$want" != "$value" ]; then
+    echo "golden $name: expected '$want', got '$value'" >&2
+    failures=$((failures + 1))
+  else
+    echo "golden $name: $value"
+  fi
+}
+
+# `cambrian evolve ARGS` at NP ranks as job NAME; its digest checked against expected.txt
+evolve() {
+  local name=$1
+  shift
+  local launch=()
+  if [ "$np" -gt 1 ]; then
+    launch=("$mpiexec" "$npflag" "$np" --oversubscribe)
+  fi
+  set +e
+  timeout -k 10 "$limit" "${launch[@]}" "$cambrian" evolve --quiet --fresh \
+    --out "$work/$name" "$@" > "$work/$name.out" 2> "$work/$name.err"
+  local rc=$?
+  set -e
+  [ "$rc" -eq 0 ] || fail "$name: exit code $rc; stderr: $(head -n 5 "$work/$name.err")"
+  local digest
+  digest=$(awk '$1 == "digest" { print $2 }' "$work/$name.out")
+  [ -n "$digest" ] || fail "$name: no digest line in $(head -n 3 "$work/$name.out")"
+  check "$name" "$digest"
+}
+
+# `cambrian simulate ARGS` as NAME: status, fitness, measures and steps on one line
+simulate() {
+  local name=$1
+  shift
+  set +e
+  "$cambrian" simulate "$@" > "$work/$name.out" 2> "$work/$name.err"
+  local rc=$?
+  set -e
+  [ "$rc" -eq 0 ] || fail "$name: exit code $rc; stderr: $(head -n 5 "$work/$name.err")"
+  local summary
+  summary=$(awk '$1 == "creature" || $1 == "body" || $1 == "task" || $1 == "wall" { next }
+                 $1 == "status" { printf "status=%s ", $2; next }
+                 { printf "%s=%s ", $1, $2 }' "$work/$name.out")
+  check "$name" "${summary% }"
+}
+
+creatures=$source_dir/jobs/creatures
+case $mode in
+  synthetic)
+    evolve synthetic --task.name synthetic --task.synthetic_cost_us 100 \
+      --task.synthetic_cost_per_gene_us 10 --task.synthetic_noise 0.3 \
+      --evolution.population 24 --evolution.generations 6 --seed 11
+    ;;
+  walk)
+    evolve walk --config "$source_dir/jobs/experiments/walk.ini" --evolution.population 16 \
+      --evolution.generations 4 --task.evaluation_time 2 --seed 3
+    ;;
+  variants)
+    common=(--evolution.population 12 --evolution.generations 3 --task.evaluation_time 1.5)
+    evolve jump --task.name jump "${common[@]}" --seed 4
+    evolve torque_self_collision --physics.actuation torque --physics.self_collision true \
+      --evolution.selection tournament "${common[@]}" --seed 5
+    evolve chaumont_rest --config "$source_dir/jobs/experiments/chaumont.ini" \
+      --task.rest_check true --evolution.selection rank "${common[@]}" --seed 6
+    evolve collected_sus --evolution.keep_unconnected false --evolution.selection sus \
+      --task.normalisation volume "${common[@]}" --seed 7
+    evolve seeded --evolution.seed_genomes "$creatures/walker4.genome $creatures/snake.genome" \
+      --evolution.selection roulette "${common[@]}" --seed 8
+    evolve synthetic_lognormal --task.name synthetic --task.synthetic_cost_us 50 \
+      --task.synthetic_distribution lognormal --task.synthetic_cv 0.8 \
+      --evolution.population 20 --evolution.generations 4 --seed 9
+    ;;
+  simulate)
+    for creature in walker4 snake pole single_block; do
+      simulate "simulate_${creature}_walk" --genome "$creatures/$creature.genome" --task walk \
+        --task.evaluation_time 3
+    done
+    simulate simulate_walker4_jump --genome "$creatures/walker4.genome" --task jump \
+      --task.evaluation_time 2
+    simulate simulate_snake_torque --genome "$creatures/snake.genome" --task walk \
+      --physics.actuation torque --physics.self_collision true --task.evaluation_time 2
+    for seed in 1 2 3 4 5 6; do
+      simulate "simulate_random${seed}_walk" --random --seed "$seed" --task walk \
+        --task.evaluation_time 3 --task.rest_check true
+      simulate "simulate_random${seed}_jump" --random --seed "$seed" --task jump \
+        --task.evaluation_time 2
+    done
+    simulate simulate_random3_synthetic --random --seed 3 --task synthetic \
+      --task.synthetic_cost_us 10 --task.synthetic_distribution lognormal
+    ;;
+  *)
+    fail "unknown mode $mode"
+    ;;
+esac
+[ "$failures" -eq 0 ] || fail "$failures value(s) differ from $expected"
