@@ -3,7 +3,8 @@
 
 Exit 0 when the histories A and B are identical except timing and placement columns (wall
 times, unix_time, eval_seconds, worker_rank, workers, busy/idle, checkpoint_seconds) and
-run-only provenance (start_time, rank_count, the run-only keys of config_text such as run.out);
+run-only provenance (start_time, rank_count, and the keys of config_text that the histories list
+as run-only in their run_only_settings attribute, such as run.out);
 exit 1 with a readable list of differences otherwise; exit 2 when a file cannot be read.
 
 Values are compared bit for bit (NaN equals NaN only with the same bits). Used by the
@@ -39,8 +40,12 @@ TIMING_DATASETS = {
 # root attributes that describe the run, not its results
 RUN_ATTRIBUTES = {"start_time", "rank_count"}
 
-# settings that may differ between runs with equal results (src/store/checkpoint.cpp)
-RUN_ONLY_SETTINGS = {
+# root attributes compared through their meaning rather than their text
+READ_APART = {"config_text", "run_only_settings"}
+
+# the run-only keys of histories written before each history listed its own (in the attribute
+# run_only_settings, from the settings' declarations): frozen, never extended
+RUN_ONLY_BEFORE_THE_ATTRIBUTE = frozenset({
     "evolution.generations",
     "run.out",
     "run.quiet",
@@ -49,11 +54,21 @@ RUN_ONLY_SETTINGS = {
     "run.checkpoint_every",
     "run.checkpoint_minutes",
     "run.test_kill_at",
-}
+    "run.test_worker_abort_at",
+    "run.dispatch_order",
+    "run.dispatch_seed",
+})
 
 
-def result_settings(config_text):
-    """The `section.key -> value` settings of INI text, run-only keys left out."""
+def run_only_settings(file):
+    """The run-only keys a history lists (run_only_settings), or the frozen older set."""
+    if "run_only_settings" in file.attrs:
+        return {text(v) for v in np.atleast_1d(file.attrs["run_only_settings"])}
+    return set(RUN_ONLY_BEFORE_THE_ATTRIBUTE)
+
+
+def result_settings(config_text, run_only):
+    """The `section.key -> value` settings of INI text, the keys of `run_only` left out."""
     settings, section = {}, ""
     for line in config_text.splitlines():
         if line.startswith("[") and line.endswith("]"):
@@ -61,7 +76,7 @@ def result_settings(config_text):
         elif " = " in line:
             key, value = line.split(" = ", 1)
             name = section + "." + key
-            if name not in RUN_ONLY_SETTINGS:
+            if name not in run_only:
                 settings[name] = value
     return settings
 
@@ -87,6 +102,17 @@ def datasets(group, prefix=""):
     return found
 
 
+def compare_settings(a, b, differences):
+    """Appends a line per result-changing setting that differs between the files a and b (the
+    keys either file declares run-only are left out)."""
+    run_only = run_only_settings(a) | run_only_settings(b)
+    sa = result_settings(text(a.attrs["config_text"]), run_only)
+    sb = result_settings(text(b.attrs["config_text"]), run_only)
+    for key in sorted(set(sa) | set(sb)):
+        if sa.get(key) != sb.get(key):
+            differences.append(f"/: config_text setting {key}: {sa.get(key)!r} != {sb.get(key)!r}")
+
+
 def compare_attributes(where, a, b, skip, differences):
     """Appends a line per attribute that differs between the objects a and b."""
     for name in sorted(set(a.attrs) | set(b.attrs)):
@@ -95,13 +121,6 @@ def compare_attributes(where, a, b, skip, differences):
         if name not in a.attrs or name not in b.attrs:
             side = "A" if name in a.attrs else "B"
             differences.append(f"{where}: attribute {name} only in {side}")
-            continue
-        if name == "config_text":
-            sa, sb = result_settings(text(a.attrs[name])), result_settings(text(b.attrs[name]))
-            for key in sorted(set(sa) | set(sb)):
-                if sa.get(key) != sb.get(key):
-                    differences.append(
-                        f"{where}: config_text setting {key}: {sa.get(key)!r} != {sb.get(key)!r}")
             continue
         va, vb = a.attrs[name], b.attrs[name]
         if text(va) != text(vb):
@@ -142,7 +161,8 @@ def compare(path_a, path_b, ignore=()):
     differences = []
     skip = TIMING_DATASETS | set(ignore)
     with h5py.File(path_a, "r", swmr=True) as a, h5py.File(path_b, "r", swmr=True) as b:
-        compare_attributes("/", a, b, RUN_ATTRIBUTES, differences)
+        compare_attributes("/", a, b, RUN_ATTRIBUTES | READ_APART, differences)
+        compare_settings(a, b, differences)
         da, db = datasets(a), datasets(b)
         for path in sorted(set(da) | set(db)):
             if path not in da or path not in db:

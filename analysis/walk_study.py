@@ -68,6 +68,13 @@ def generation_best(individuals, generation, ok_code):
     return best[np.argmin(individuals["id"][best])]
 
 
+def measure(individuals, name, row):
+    """A measure of one row; NaN when the run's task does not report it (measures are stored by
+    name, one column per measure the task declares)."""
+    column = individuals.get("measure:" + name)
+    return float("nan") if column is None else float(column[row])
+
+
 def study_run(label, directory):
     """The figures of one run: best per generation and the first/last best creatures."""
     with ch.History(os.path.join(directory, "history.h5")) as history:
@@ -80,9 +87,9 @@ def study_run(label, directory):
         row = generation_best(individuals, generation, ok_code)
         entry = {
             "id": int(individuals["id"][row]),
-            "distance": float(individuals["measure:distance"][row]),
-            "body_lengths": float(individuals["measure:body_lengths"][row]),
-            "body_length": float(individuals["measure:body_length"][row]),
+            "distance": measure(individuals, "distance", row),
+            "body_lengths": measure(individuals, "body_lengths", row),
+            "body_length": measure(individuals, "body_length", row),
             "parts": int(individuals["parts"][row]),
             "progress": None,
         }

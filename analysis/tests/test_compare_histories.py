@@ -18,7 +18,7 @@ CONFIG = "[evolution]\ngenerations = 3\npopulation = 4\n\n[run]\nout = {out}\nse
 
 
 def write_history(path, out="a", rank_count=1, fitness=None, eval_seconds=None, seed=5,
-                  extra=None):
+                  extra=None, run_only=None):
     """A miniature history: root attributes, /individuals and /generations columns."""
     fitness = np.array([1.0, 2.0, np.nan, 0.5]) if fitness is None else np.asarray(fitness)
     eval_seconds = np.array([0.1, 0.2, 0.3, 0.4]) if eval_seconds is None else eval_seconds
@@ -28,6 +28,8 @@ def write_history(path, out="a", rank_count=1, fitness=None, eval_seconds=None, 
         f.attrs["seed"] = np.uint64(seed)
         f.attrs["start_time"] = f"2024-01-0{rank_count}T00:00:00Z"
         f.attrs["rank_count"] = np.int32(rank_count)
+        if run_only is not None:
+            f.attrs["run_only_settings"] = np.array(run_only, dtype=h5py.string_dtype())
         ind = f.create_group("individuals")
         ind.create_dataset("id", data=np.arange(4, dtype=np.uint64))
         d = ind.create_dataset("fitness", data=fitness)
@@ -67,6 +69,25 @@ def test_identical_except_timing_and_run_only_settings(pair):
     assert result.returncode == 0, result.stdout
     assert "identical" in result.stdout
     assert cmp.compare(str(a), str(b)) == []
+
+
+def test_run_only_keys_come_from_the_files(pair):
+    # files that list their run-only keys: a listed key is not compared, run.out (not listed
+    # here) is
+    a, b = pair
+    write_history(a, run_only=["evolution.population"])
+    write_history(b, out="elsewhere", run_only=["evolution.population"])
+    with h5py.File(b, "a") as f:
+        f.attrs["config_text"] = CONFIG.format(out="elsewhere").replace("population = 4",
+                                                                       "population = 9")
+    differences = cmp.compare(str(a), str(b))
+    assert any("run.out" in line for line in differences), differences
+    assert not any("population" in line for line in differences), differences
+    # files without the attribute fall back to the keys that were run-only before it existed
+    write_history(a)
+    with h5py.File(a, "r") as f:
+        assert "run.out" in cmp.run_only_settings(f)
+        assert "evolution.population" not in cmp.run_only_settings(f)
 
 
 def test_changed_fitness_is_reported_with_row(pair):

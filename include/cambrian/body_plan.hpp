@@ -1,8 +1,8 @@
-// cambrian: BodyPlan, the immutable developed creature — the one meeting point between genome
-// encodings and physics. No Bullet here.
+// cambrian: BodyPlan, the immutable developed body — the one meeting point between genome
+// encodings and physics worlds. Parts with shapes and materials, joints of several kinds (a tree
+// through each part's parent, plus closed-loop joints), sensors and effectors. No Bullet here.
 #pragma once
 
-#include "cambrian/genome.hpp"
 #include "cambrian/math.hpp"
 
 #include <array>
@@ -11,83 +11,119 @@
 
 namespace cambrian {
 
-/// One weighted wire into a neuron or effector: value = weight * signal[signal], or the weight
-/// itself when signal < 0 (a constant).
-struct Wire {
-  int signal = -1;
-  double weight = 0;
-  friend bool operator==(const Wire&, const Wire&) = default;
+/// Part shapes. `PartPlan::size` is the full box size; a capsule or cylinder lies along its x
+/// axis (size.x its whole length, size.y its diameter), a sphere's diameter is size.x.
+enum class PartShape : std::uint8_t { box = 0, capsule = 1, sphere = 2, cylinder = 3 };
+/// Number of PartShape values.
+constexpr int kPartShapeKinds = 4;
+/// Lower-case shape name ("capsule").
+const char* shapeName(PartShape shape);
+
+/// How a part is jointed to another. Degrees of freedom: fixed 0, revolute 1, universal 2,
+/// spherical 3, prismatic 1 (a slider along its first axis).
+enum class JointType : std::uint8_t {
+  fixed = 0,
+  revolute = 1,
+  universal = 2,
+  spherical = 3,
+  prismatic = 4,
+};
+/// Number of JointType values.
+constexpr int kJointTypeKinds = 5;
+/// Degrees of freedom of a joint type.
+int degreesOfFreedom(JointType type);
+/// Lower-case joint name ("universal").
+const char* jointName(JointType type);
+
+/// What a part is made of. Mass is the part's own (the encoding computes it from the density).
+struct Material {
+  double density = 1000;  ///< kg / m^3
+  double friction = 1.0;  ///< Coulomb coefficient (the world combines it with the other body's)
+  /// Bounciness; negative: the world's default (physics.restitution)
+  double restitution = -1;
+  friend bool operator==(const Material&, const Material&) = default;
 };
 
-/// One part instance and the joint that ties it to its parent.
+/// One part and the joint that ties it to its parent (the tree joint).
 struct PartPlan {
-  int node = 0;                        ///< genome node it is an instance of
-  int parent = -1;                     ///< index of the parent part, -1 for the root
-  int connection = -1;                 ///< genome connection that made it, -1 for the root
-  int depth = 0;                       ///< root = 0
-  Vec3 size;                           ///< full box size, metres
-  double mass = 0;                     ///< kg
+  int node = 0;         ///< the gene (genome node) it was made from
+  int parent = -1;      ///< index of the parent part, -1 for the root
+  int connection = -1;  ///< the gene (connection) that made it, -1 for the root
+  int depth = 0;        ///< root = 0
+  PartShape shape = PartShape::box;
+  Vec3 size;        ///< full size, metres (see PartShape)
+  double mass = 0;  ///< kg
+  Material material;
   Transform pose;                      ///< pose at birth in the creature frame (root at the origin)
-  JointType joint = JointType::rigid;  ///< to the parent
+  JointType joint = JointType::fixed;  ///< to the parent
   Vec3 pivot_in_parent;                ///< joint point in the parent's frame
   Vec3 pivot_in_child;                 ///< joint point in this part's frame
   Quat parent_to_child;                ///< this part's frame relative to the parent's frame
   std::array<Vec3, 3> axes{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  ///< in this part's frame
-  Vec3 joint_limit;          ///< symmetric limit per degree of freedom, radians
+  Vec3 joint_limit;          ///< symmetric limit per degree of freedom, radians (prismatic: m)
   double cross_section = 0;  ///< m^2, smaller of the two faces meeting at the joint; physics
                              ///< turns it into the joint's maximum torque
   bool reflected = false;    ///< made through a reflected connection
 };
 
-/// What a sensor reads. Values are written by physics into the signal array each step.
+/// A joint that closes a loop between two parts already joined through the tree (a ladder's
+/// rung, a spring-mass organism's tube). Worlds that cannot build loops refuse such a plan.
+struct LoopJoint {
+  int part_a = 0, part_b = 0;
+  JointType joint = JointType::fixed;
+  Vec3 pivot_in_a, pivot_in_b;  ///< the joint point in each part's frame
+  std::array<Vec3, 3> axes{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  ///< in part b's frame
+  Vec3 joint_limit;
+};
+
+/// What a sensor reads; physics writes the values into the controller's sensor array each step.
 enum class SensorKind : std::uint8_t {
-  joint_angle,  ///< angle of degree of freedom `axis` of the joint to the parent, radians / limit
+  joint_angle,  ///< position of degree of freedom `axis` of the joint to the parent / its limit
   contact,      ///< 1 if the part touches anything, else 0
-  photo,        ///< component `axis` of the unit direction to the target in the part's frame
+  photo,        ///< component `axis` of the unit direction to the light in the part's frame
 };
 
 struct SensorPlan {
   SensorKind kind = SensorKind::contact;
   int part = 0;
   int axis = 0;
+  friend bool operator==(const SensorPlan&, const SensorPlan&) = default;
 };
 
-/// A neuron instance: function, parameter and up to three input wires.
-struct NeuronPlan {
-  NeuronFunction function = NeuronFunction::sum;
-  double parameter = 0;
-  int part = -1;  ///< owning part, -1 for a brain neuron
-  std::array<Wire, 3> inputs{};
-};
-
-/// Drives one degree of freedom: torque = strength * clamp(input + oscillator, -1, 1).
+/// Drives degree of freedom `dof` of the joint between `part` and its parent: the controller's
+/// command in [-1, 1] times the joint's strength.
 struct EffectorPlan {
   int part = 0;
   int dof = 0;
-  Wire input;
-  JointControllerGene oscillator;  ///< Minemonics per-joint controller (disabled = none)
+  friend bool operator==(const EffectorPlan&, const EffectorPlan&) = default;
 };
 
-/// The developed creature. Signal array layout: sensors first, then neurons.
+/// The developed body.
 struct BodyPlan {
   std::vector<PartPlan> parts;  ///< parents always precede children
+  std::vector<LoopJoint> loops;
   std::vector<SensorPlan> sensors;
-  std::vector<NeuronPlan> neurons;
   std::vector<EffectorPlan> effectors;
-  bool truncated = false;  ///< development stopped at GenomeLimits::max_parts
+  bool truncated = false;  ///< development stopped at its part limit
 
-  int signalCount() const { return static_cast<int>(sensors.size() + neurons.size()); }
-  int neuronSignal(int neuron) const { return static_cast<int>(sensors.size()) + neuron; }
-  int jointCount() const { return parts.empty() ? 0 : static_cast<int>(parts.size()) - 1; }
+  /// Joints of the tree plus loop joints.
+  int jointCount() const;
   int degreesOfFreedom() const;
   double totalMass() const;
   double totalVolume() const;
 };
 
-/// Develops a genome (embryogenesis): walks the graph from node 0 with recursive limits,
-/// reflections and scaling; instantiates sensors, neurons and effectors and wires them as
-/// Sims describes. Deterministic. Sizes are clamped to limits; development stops at
-/// limits.max_parts parts (breadth-first), setting `truncated`.
-BodyPlan develop(const Genome& genome, const GenomeLimits& limits);
+/// Volume of a part of `shape` and full size `size`, m^3.
+double shapeVolume(PartShape shape, Vec3 size);
+/// Surface of a part of `shape` and `size`, m^2.
+double shapeSurface(PartShape shape, Vec3 size);
+/// How far a part of `shape` and `size` turned by `rotation` reaches from its centre along the
+/// unit world direction `direction`, m (a box: its farthest corner).
+double shapeReach(PartShape shape, Vec3 size, Quat rotation, Vec3 direction);
+/// The lowest world z of a part at `pose`.
+double lowestZ(const PartPlan& part, const Transform& pose);
+
+/// Largest horizontal extent of the body at birth, m (for distances in body lengths).
+double bodyLength(const BodyPlan& plan);
 
 }  // namespace cambrian

@@ -32,6 +32,13 @@ struct Measure {
   friend bool operator==(const Measure&, const Measure&) = default;
 };
 
+/// A measure a task declares it reports: stored by name in outcomes, histories and tables.
+struct MeasureInfo {
+  std::string name;  ///< "distance"
+  std::string unit;  ///< "m"
+  friend bool operator==(const MeasureInfo&, const MeasureInfo&) = default;
+};
+
 /// The result of one evaluation. Everything but wall_seconds is deterministic.
 struct Outcome {
   EvalStatus status = EvalStatus::ok;

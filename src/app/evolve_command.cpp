@@ -1,23 +1,22 @@
 // cambrian evolve: rank 0 breeds and schedules, ranks 1..N-1 evaluate; one rank evaluates in
 // process. Every rank parses the same options; a bad setting ends every rank with
 // ExitCode::config before any simulation starts.
+#include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
-#include "cambrian/genome.hpp"
+#include "cambrian/evaluate.hpp"
 
 #include "commands.hpp"
 #include "evolution/evolution_settings.hpp"
 #include "options.hpp"
-#include "parallel/evolution_run.hpp"
 #include "parallel/mpi_context.hpp"
 #include "parallel/scheduler.hpp"
-#include "parallel/stop_request.hpp"
-#include "parallel/test_kill.hpp"
 #include "parallel/worker.hpp"
+#include "run/evolution_run.hpp"
+#include "run/stop_request.hpp"
+#include "tasks/task.hpp"
 
-#include <charconv>
 #include <iostream>
 #include <malloc.h>
-#include <map>
 #include <sstream>
 
 namespace cambrian {
@@ -26,225 +25,36 @@ namespace {
 
 // everything evolve reads from the command line and the experiment file
 struct EvolveSettings {
-  CreatureSettings creature;
+  WorkerSettings worker;  // the creature settings and the workers' testing keys
   EvolutionSettings evolution;
   RunSettings run;
-  std::string selection_name = "truncation";
-  std::vector<std::string> seed_genomes;
-  SeedValue seed;
-  std::uint64_t fail_every = 0;
-  std::uint64_t test_worker_abort_at = 0;
-  std::string dispatch_order_name = "largest_first";
   DispatchSettings dispatch;
-  SeedValue dispatch_seed;
+
+  // every key, bound to these settings
+  void declare(SettingsSchema& schema) {
+    worker.creature.declareSettings(schema);
+    evolution.declareSettings(schema);
+    run.declareSettings(schema);
+    dispatch.declareSettings(schema);
+    worker.declareTestingSettings(schema);
+  }
 };
-
-// the [evolution] and [run] keys
-po::options_description evolutionOptions(EvolveSettings& s) {
-  EvolutionSettings& e = s.evolution;
-  MutationSettings& m = e.mutation;
-  po::options_description evolution("[evolution] genetic algorithm");
-  evolution.add_options()("evolution.population",
-                          po::value(&e.population)->default_value(e.population),
-                          "individuals per generation")(
-      "evolution.generations", po::value(&e.generations)->default_value(e.generations),
-      "generations to run, the first included")(
-      "evolution.elite_fraction", po::value(&e.elite_fraction)->default_value(e.elite_fraction),
-      "share of the best kept unchanged and not re-evaluated (0..1)")(
-      "evolution.mutation_fraction",
-      po::value(&e.mutation_fraction)->default_value(e.mutation_fraction),
-      "share of offspring made by mutation (the three fractions sum to 1)")(
-      "evolution.crossover_fraction",
-      po::value(&e.crossover_fraction)->default_value(e.crossover_fraction),
-      "share of offspring made by crossover")(
-      "evolution.graft_fraction", po::value(&e.graft_fraction)->default_value(e.graft_fraction),
-      "share of offspring made by grafting")(
-      "evolution.mutation_rate", po::value(&m.parameter_rate)->default_value(m.parameter_rate),
-      "chance each parameter of an asexual offspring is perturbed (0..1)")(
-      "evolution.mutation_perturbation", po::value(&m.perturbation)->default_value(m.perturbation),
-      "perturbation scale, fraction of each parameter's range")(
-      "evolution.add_node_rate", po::value(&m.add_node_rate)->default_value(m.add_node_rate),
-      "chance a mutation adds a node")(
-      "evolution.remove_node_rate",
-      po::value(&m.remove_node_rate)->default_value(m.remove_node_rate),
-      "chance a mutation removes a node")(
-      "evolution.add_connection_rate",
-      po::value(&m.add_connection_rate)->default_value(m.add_connection_rate),
-      "chance a mutation adds a connection")(
-      "evolution.remove_connection_rate",
-      po::value(&m.remove_connection_rate)->default_value(m.remove_connection_rate),
-      "chance a mutation removes a connection")(
-      "evolution.repoint_rate", po::value(&m.repoint_rate)->default_value(m.repoint_rate),
-      "chance each connection is re-pointed")(
-      "evolution.add_neuron_rate", po::value(&m.add_neuron_rate)->default_value(m.add_neuron_rate),
-      "chance a mutation adds a neuron")(
-      "evolution.remove_neuron_rate",
-      po::value(&m.remove_neuron_rate)->default_value(m.remove_neuron_rate),
-      "chance a mutation removes a neuron")(
-      "evolution.keep_unconnected",
-      po::value(&m.keep_unconnected)->default_value(m.keep_unconnected),
-      "keep nodes unreachable from the root (Chaumont) instead of collecting them")(
-      "evolution.post_crossover_mutation_chance",
-      po::value(&e.post_crossover_mutation_chance)->default_value(e.post_crossover_mutation_chance),
-      "chance an offspring of crossover or grafting is then mutated")(
-      "evolution.post_crossover_mutation_rate",
-      po::value(&e.post_crossover_mutation_rate)->default_value(e.post_crossover_mutation_rate),
-      "per-parameter rate of that mutation")(
-      "evolution.selection", po::value(&s.selection_name)->default_value(s.selection_name),
-      "parent selection: truncation | tournament | roulette | sus | rank")(
-      "evolution.truncation_fraction",
-      po::value(&e.selection.truncation_fraction)->default_value(e.selection.truncation_fraction),
-      "truncation: share of the best that may be parents")(
-      "evolution.tournament_size",
-      po::value(&e.selection.tournament_size)->default_value(e.selection.tournament_size),
-      "tournament: contestants per pick")(
-      "evolution.rank_pressure",
-      po::value(&e.selection.rank_pressure)->default_value(e.selection.rank_pressure),
-      "rank: expected picks of the best (1..2)")(
-      "evolution.seed_genomes", po::value(&s.seed_genomes)->composing(),
-      "genome files the first generation starts from (repeat the key or separate by spaces)");
-
-  po::options_description run("[run] this run");
-  s.seed.value = e.seed;
-  run.add_options()("run.seed", po::value(&s.seed)->default_value(s.seed),
-                    "run seed, 0..2^64-1 (same seed, same run)")(
-      "run.out", po::value(&s.run.out_dir)->default_value(s.run.out_dir),
-      "output directory (history.h5, individuals.tsv, generations.tsv)")(
-      "run.quiet", po::value(&s.run.quiet)->default_value(s.run.quiet),
-      "no progress lines, only the digest")("run.verbose",
-                                            po::value(&s.run.verbose)->default_value(s.run.verbose),
-                                            "timing details after each progress line")(
-      "run.fail_every", po::value(&s.fail_every)->default_value(s.fail_every),
-      "testing: workers fail every creature whose id is a multiple of this (0 = never)")(
-      "run.test_worker_abort_at",
-      po::value(&s.test_worker_abort_at)->default_value(s.test_worker_abort_at),
-      "testing: the worker rank that receives the creature with this id stops with an "
-      "unrecoverable error, ending the job with exit code 8 (0 = never)")(
-      "run.dispatch_order", po::value(&s.dispatch_order_name)->default_value(s.dispatch_order_name),
-      "order in which a generation's creatures are handed out: largest_first (genome size) | "
-      "shuffled | smallest_first; results are the same, only the span changes")(
-      "run.dispatch_seed", po::value(&s.dispatch_seed)->default_value(s.dispatch_seed),
-      "shuffled: seed of the per-generation permutations (0 = the run seed)")(
-      "run.checkpoint_every",
-      po::value(&s.run.checkpoint_every)->default_value(s.run.checkpoint_every),
-      "write DIR/checkpoint.h5 every this many generations (0 = no generation cadence; a "
-      "checkpoint always follows the last generation and precedes a clean stop)")(
-      "run.checkpoint_minutes",
-      po::value(&s.run.checkpoint_minutes)->default_value(s.run.checkpoint_minutes),
-      "... or when this many minutes passed since the last one, whichever comes first (0 = off)")(
-      "run.max_hours", po::value(&s.run.max_hours)->default_value(s.run.max_hours),
-      "stop cleanly (checkpoint, exit 0) before this many hours of wall time: no generation "
-      "starts that the measured times say would not end in time (0 = no limit)")(
-      "run.test_kill_at", po::value(&s.run.test_kill_at)->default_value(s.run.test_kill_at),
-      "testing: rank 0 SIGKILLs itself at POINT:GENERATION, POINT one of evaluation, history, "
-      "checkpoint_write, checkpoint_rename, checkpoint_done");
-
-  po::options_description all("Evolution settings (INI sections [evolution], [run])");
-  all.add(evolution).add(run);
-  return all;
-}
-
-// the checkpoint and time-limit keys; throws ConfigError naming the key and value
-void checkRunSettings(const RunSettings& run) {
-  if (run.checkpoint_every < 0)
-    throw ConfigError("run.checkpoint_every = " + std::to_string(run.checkpoint_every) +
-                      ": must be >= 0");
-  if (!(run.checkpoint_minutes >= 0))
-    throw ConfigError("run.checkpoint_minutes = " + std::to_string(run.checkpoint_minutes) +
-                      ": must be >= 0");
-  if (!(run.max_hours >= 0))
-    throw ConfigError("run.max_hours = " + std::to_string(run.max_hours) + ": must be >= 0");
-  setTestKillPoint(run.test_kill_at);
-}
-
-// splits "a.txt b.txt,c.txt" lists into single paths
-std::vector<std::string> splitList(const std::vector<std::string>& values) {
-  std::vector<std::string> items;
-  for (std::string value : values) {
-    for (char& c : value) {
-      if (c == ',')
-        c = ' ';
-    }
-    std::istringstream words(value);
-    std::string word;
-    while (words >> word)
-      items.push_back(word);
-  }
-  return items;
-}
-
-// one option value as INI text (numbers in the shortest form that reads back exactly)
-std::string valueText(const boost::any& value) {
-  char number[64];
-  if (const auto* v = boost::any_cast<double>(&value))
-    return std::string(number, std::to_chars(number, number + sizeof number, *v).ptr);
-  if (const auto* v = boost::any_cast<float>(&value))
-    return std::string(number, std::to_chars(number, number + sizeof number, *v).ptr);
-  if (const auto* v = boost::any_cast<bool>(&value))
-    return *v ? "true" : "false";
-  if (const auto* v = boost::any_cast<std::string>(&value))
-    return *v;
-  if (const auto* v = boost::any_cast<int>(&value))
-    return std::to_string(*v);
-  if (const auto* v = boost::any_cast<unsigned>(&value))
-    return std::to_string(*v);
-  if (const auto* v = boost::any_cast<long>(&value))
-    return std::to_string(*v);
-  if (const auto* v = boost::any_cast<unsigned long>(&value))
-    return std::to_string(*v);
-  if (const auto* v = boost::any_cast<long long>(&value))
-    return std::to_string(*v);
-  if (const auto* v = boost::any_cast<unsigned long long>(&value))
-    return std::to_string(*v);
-  if (const auto* v = boost::any_cast<SeedValue>(&value))
-    return std::to_string(v->value);
-  if (const auto* v = boost::any_cast<std::vector<std::string>>(&value)) {
-    std::string text;
-    for (const std::string& item : *v)
-      text += (text.empty() ? "" : " ") + item;
-    return text;
-  }
-  return "?";
-}
-
-// the effective settings as INI text: every [section] key = value, sorted (history provenance)
-std::string configText(const po::options_description& settings, const po::variables_map& vm) {
-  std::map<std::string, std::map<std::string, std::string>> sections;
-  for (const auto& option : settings.options()) {
-    const std::string& name = option->long_name();
-    std::size_t dot = name.find('.');
-    if (dot == std::string::npos || !vm.count(name))
-      continue;
-    sections[name.substr(0, dot)][name.substr(dot + 1)] = valueText(vm[name].value());
-  }
-  std::string text;
-  for (const auto& [section, keys] : sections) {
-    text += (text.empty() ? "[" : "\n[") + section + "]\n";
-    for (const auto& [key, value] : keys)
-      text += key + " = " + value + "\n";
-  }
-  return text;
-}
 
 // what parsing produced: settings, or an exit code and message
 struct Setup {
   EvolveSettings settings;
-  std::vector<Genome> seeds;
+  std::vector<Genotype> seeds;
   bool help = false;
   std::string help_text;
 };
 
 // parses and checks everything; throws Error with the config code and the file named
-Setup parse(int argc, char** argv, bool read_seeds) {
-  Setup setup;
+void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
   EvolveSettings& s = setup.settings;
-  po::options_description settings;
-  settings.add(creatureOptions(s.creature)).add(evolutionOptions(s));
-  std::string config_path;
-  SeedValue seed;
-  std::string out;
+  SettingsSchema schema;
+  s.declare(schema);
+  std::string config_path, seed, out, max_hours;
   bool quiet = false, verbose = false, fresh = false, help_markdown = false;
-  double max_hours = 0;
   po::options_description cli("Command line");
   cli.add_options()("help,h", "print this help")(
       "help-markdown", po::bool_switch(&help_markdown),
@@ -259,11 +69,11 @@ Setup parse(int argc, char** argv, bool read_seeds) {
       "start over even when DIR holds a checkpoint (removes it, overwrites history.h5)");
 
   OptionOrigins origins;
-  po::variables_map vm = parseOptions(argc, argv, cli, settings, nullptr, "config", &origins);
+  po::variables_map vm = parseOptions(argc, argv, cli, schema, nullptr, "config", &origins);
   if (help_markdown) {
     setup.help = true;
-    setup.help_text = optionsMarkdown(settings);
-    return setup;
+    setup.help_text = optionsMarkdown(schema);
+    return;
   }
   if (vm.count("help")) {
     std::ostringstream text;
@@ -281,72 +91,53 @@ Setup parse(int argc, char** argv, bool read_seeds) {
          << "finished run; the rank count may differ); --fresh starts over. SIGUSR1 or SIGTERM\n"
          << "(use SIGUSR1 under mpirun) and --max-hours stop cleanly after a generation with a\n"
          << "checkpoint and exit 0. Details in docs/checkpoints.md.\n\n"
-         << cli << "\n"
-         << optionsHelp(settings);
+         << optionsHelp(cli, schema);
     setup.help = true;
     setup.help_text = text.str();
-    return setup;
+    return;
   }
 
   // short forms win over the long keys, in the settings and in the stored settings text
-  auto shortForm = [&](const char* key, const boost::any& value) {
-    vm.at(key).value() = value;
+  auto shortForm = [&](const char* key, const std::string& value) {
+    try {
+      schema.set(key, value);
+    } catch (const SettingTypeError& e) {
+      throw Error(ExitCode::usage, std::string("command line: --") + e.what());
+    }
     origins.setOnCommandLine(key);
   };
-  if (vm.count("seed")) {
-    s.seed = seed;
+  if (vm.count("seed"))
     shortForm("run.seed", seed);
-  }
-  if (vm.count("out")) {
-    s.run.out_dir = out;
+  if (vm.count("out"))
     shortForm("run.out", out);
-  }
-  if (quiet) {
-    s.run.quiet = true;
-    shortForm("run.quiet", true);
-  }
-  if (verbose) {
-    s.run.verbose = true;
-    shortForm("run.verbose", true);
-  }
-  if (vm.count("max-hours")) {
-    s.run.max_hours = max_hours;
+  if (quiet)
+    shortForm("run.quiet", "true");
+  if (verbose)
+    shortForm("run.verbose", "true");
+  if (vm.count("max-hours"))
     shortForm("run.max_hours", max_hours);
-  }
-  s.evolution.seed = s.seed.value;
+
+  // range checks, naming the file or the command line the value came from
+  checkSettings(schema, origins);
   s.run.fresh = fresh;
-  s.run.config_text = configText(settings, vm);
+  s.run.config_text = schema.iniText();
   // every setting at its default (keys added since a checkpoint was written compare with these)
-  po::variables_map defaults;
-  po::store(po::parsed_options(&settings), defaults);
-  s.run.default_config_text = configText(settings, defaults);
+  s.run.default_config_text = schema.defaultIniText();
+  s.run.run_only = schema.runOnlyKeys();
+  s.run.measures = s.worker.creature.task().measures();
 
-  // words to enums and range checks, naming the file or the command line the value came from
-  try {
-    finishCreatureSettings(s.creature);
-    s.evolution.selection.method = selectionMethodFromName(s.selection_name);
-    s.evolution.seed_genomes = splitList(s.seed_genomes);
-    validateEvolutionSettings(s.evolution);
-    checkRunSettings(s.run);
-    s.dispatch.order = dispatchOrderFromName(s.dispatch_order_name);
-    s.dispatch.seed = s.dispatch_seed.value;
-  } catch (const ConfigError& e) {
-    throw ConfigError(locateSettingError(e.what(), origins));
-  }
-
-  // seed genomes (rank 0 only), checked against the limits
+  // seed genomes (rank 0 only), checked against the encoding's limits
   if (read_seeds) {
     for (const std::string& path : s.evolution.seed_genomes) {
-      Genome genome = readGenomeFile(path);
+      Genotype genome = readGenomeFile(path);
       try {
-        validateGenome(genome, s.creature.limits);
+        s.worker.creature.encoding().validate(genome);
       } catch (const Error& e) {
         throw InputError(path + ": " + e.what());
       }
       setup.seeds.push_back(std::move(genome));
     }
   }
-  return setup;
 }
 
 }  // namespace
@@ -362,7 +153,7 @@ int runEvolve(int argc, char** argv) {
   Setup setup;
   int code = 0;
   try {
-    setup = parse(argc, argv, root);
+    parse(argc, argv, root, setup);
   } catch (const Error& e) {
     code = static_cast<int>(e.code());
     if (root) {
@@ -382,12 +173,8 @@ int runEvolve(int argc, char** argv) {
 
   // the creature settings every evaluation uses
   const EvolveSettings& s = setup.settings;
-  WorkerSettings worker;
-  worker.limits = s.creature.limits;
-  worker.task = s.creature.task;
-  worker.physics = s.creature.physics;
-  worker.fail_every = s.fail_every;
-  worker.test_abort_at = s.test_worker_abort_at;
+  const WorkerSettings& worker = s.worker;
+  const CreatureSettings& creature = worker.creature;
 
   try {
     if (!root) {
@@ -406,19 +193,18 @@ int runEvolve(int argc, char** argv) {
     }
     if (!s.run.quiet) {
       std::cout << "cambrian evolve: " << mpi.size() << " rank(s), " << evaluator->workers()
-                << " evaluating; task " << s.creature.task_name << ", population "
-                << s.evolution.population << ", generations " << s.evolution.generations
-                << ", seed " << s.evolution.seed << std::endl;
+                << " evaluating; task " << creature.task().name() << ", encoding "
+                << creature.encoding().name() << ", population " << s.evolution.population
+                << ", generations " << s.evolution.generations << ", seed " << s.evolution.seed
+                << std::endl;
     }
     // Chaumont 5.5: new bodies that overlap themselves are redrawn before evaluation
     RunSettings run = s.run;
     run.rank_count = mpi.size();
     run.stop_requested = stopRequested;
     run.stop_reason = stopSignalName;
-    if (s.creature.task.kind != TaskKind::synthetic) {
-      run.viable = [&s](const Genome& genome) {
-        return isViable(genome, s.creature.limits, s.creature.physics);
-      };
+    if (creature.task().needsBody()) {
+      run.viable = [&creature](const Genotype& genome) { return isViable(genome, creature); };
     }
     // rank 0 keeps the memory it frees (glibc): every generation builds megabytes of genome
     // bytes, messages and history rows, and handing them back to the kernel only to fault them in
@@ -426,7 +212,7 @@ int runEvolve(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     RunResult result =
-        runEvolution(s.evolution, s.creature.limits, setup.seeds, *evaluator, run, std::cout);
+        runEvolution(s.evolution, creature.encoding(), setup.seeds, *evaluator, run, std::cout);
     if (scheduler)
       scheduler->stopWorkers();
 

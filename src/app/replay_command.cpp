@@ -3,16 +3,18 @@
 // trajectory for rendering (analysis/animate.py).
 #include "cambrian/error.hpp"
 #include "cambrian/evaluate.hpp"
-#include "cambrian/genome.hpp"
 #include "cambrian/version.hpp"
 
 #include "commands.hpp"
+#include "core/settings.hpp"
 #include "options.hpp"
-#include "parallel/scheduler.hpp"
-#include "physics/simulation.hpp"
+#include "physics/physics_settings.hpp"
 #include "store/history.hpp"
 #include "store/trajectory.hpp"
+#include "tasks/episode.hpp"
+#include "tasks/task.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -26,32 +28,31 @@ namespace cambrian {
 namespace {
 
 // the sections of a history's config_text that decide how a creature is evaluated
-const std::set<std::string> kCreatureSections = {"genome", "physics", "task"};
+const std::set<std::string> kCreatureSections = {"environment", "genome", "physics", "task"};
 
-// the creature settings of a history: its stored [genome], [physics] and [task] keys read with
-// the definitions `cambrian evolve` uses; other sections are ignored, unknown creature keys are
-// errors (a history of another cambrian version)
+// the creature settings of a history: its stored creature sections read with the definitions
+// `cambrian evolve` uses; other sections are ignored, unknown creature keys are errors (a
+// history of another cambrian version)
 CreatureSettings creatureSettingsOf(const HistoryReader& history) {
   CreatureSettings settings;
-  po::options_description options = creatureOptions(settings);
-  po::variables_map vm;
   try {
-    std::istringstream text(history.attributes().config_text);
-    po::parsed_options parsed = po::parse_config_file(text, options, true);
-    for (const po::option& option : parsed.options) {
-      std::string section = option.string_key.substr(0, option.string_key.find('.'));
-      if (option.unregistered && kCreatureSections.count(section)) {
-        throw InputError(history.path() + ": config_text key " + option.string_key +
+    for (const IniEntry& entry :
+         parseIni(history.attributes().config_text, history.path() + ": config_text")) {
+      std::string section = entry.key.substr(0, entry.key.find('.'));
+      if (!kCreatureSections.count(section))
+        continue;
+      try {
+        settings.set(entry.key, entry.value);
+      } catch (const ConfigError& e) {
+        if (std::string(e.what()).find("unrecognised option") == std::string::npos)
+          throw;
+        throw InputError(history.path() + ": config_text key " + entry.key +
                          " is unknown to this cambrian " + kVersion +
                          " (the history was written by cambrian " +
                          history.attributes().cambrian_version + ")");
       }
     }
-    po::store(parsed, vm);
-    po::notify(vm);
-    finishCreatureSettings(settings);
-  } catch (const po::error& e) {
-    throw InputError(history.path() + ": config_text: " + e.what());
+    settings.check();
   } catch (const ConfigError& e) {
     throw InputError(history.path() + ": config_text: " + e.what());
   }
@@ -59,14 +60,14 @@ CreatureSettings creatureSettingsOf(const HistoryReader& history) {
 }
 
 // the row of the individual `id` (its first, evaluated row)
-const HistoryIndividual& rowOf(const std::vector<HistoryIndividual>& rows, std::uint64_t id,
-                               const std::string& path) {
-  for (const HistoryIndividual& row : rows) {
+const Individual& rowOf(const std::vector<Individual>& rows, std::uint64_t id,
+                        const std::string& path) {
+  for (const Individual& row : rows) {
     if (row.id == id)
       return row;
   }
   std::uint64_t largest = 0;
-  for (const HistoryIndividual& row : rows)
+  for (const Individual& row : rows)
     largest = std::max(largest, row.id);
   throw InputError(path + ": no individual with id " + std::to_string(id) +
                    (rows.empty() ? " (the history holds no individuals)"
@@ -74,13 +75,13 @@ const HistoryIndividual& rowOf(const std::vector<HistoryIndividual>& rows, std::
 }
 
 // the best ok row of the whole history, or of generation `generation`; ties: lowest id
-const HistoryIndividual& bestRow(const std::vector<HistoryIndividual>& rows,
-                                 std::optional<std::uint64_t> generation, const std::string& path) {
+const Individual& bestRow(const std::vector<Individual>& rows,
+                          std::optional<std::uint64_t> generation, const std::string& path) {
   // the generation must be one the history holds
   if (generation) {
     std::uint64_t last = 0;
     bool any = false;
-    for (const HistoryIndividual& row : rows) {
+    for (const Individual& row : rows) {
       last = std::max(last, row.generation);
       any = true;
     }
@@ -91,11 +92,12 @@ const HistoryIndividual& bestRow(const std::vector<HistoryIndividual>& rows,
                        ")");
     }
   }
-  const HistoryIndividual* best = nullptr;
-  for (const HistoryIndividual& row : rows) {
-    if (row.status != EvalStatus::ok || (generation && row.generation != *generation))
+  const Individual* best = nullptr;
+  for (const Individual& row : rows) {
+    if (row.outcome.status != EvalStatus::ok || (generation && row.generation != *generation))
       continue;
-    if (!best || row.fitness > best->fitness || (row.fitness == best->fitness && row.id < best->id))
+    if (!best || row.fitness() > best->fitness() ||
+        (row.fitness() == best->fitness() && row.id < best->id))
       best = &row;
   }
   if (!best) {
@@ -149,7 +151,7 @@ int runReplay(int argc, char** argv) {
       "write the trajectory (per-frame part poses) to this HDF5 file")(
       "frame-rate", po::value(&frame_rate)->default_value(frame_rate),
       "frames per simulated second in the export, Hz (rounded to whole physics steps)");
-  po::options_description no_settings;
+  SettingsSchema no_settings;
   po::variables_map vm = parseOptions(argc, argv, cli, no_settings, nullptr, "");
   if (vm.count("help")) {
     std::cout << cli << "\n";
@@ -171,27 +173,28 @@ int runReplay(int argc, char** argv) {
   HistoryReader history(history_path);
   const HistoryAttributes& attributes = history.attributes();
   CreatureSettings settings = creatureSettingsOf(history);
-  std::vector<HistoryIndividual> rows = history.individuals();
-  const HistoryIndividual& row =
+  std::vector<Individual> rows = history.individuals();
+  const Individual& row =
       best ? bestRow(rows, vm.count("generation") ? std::optional(generation) : std::nullopt,
                      history_path)
            : rowOf(rows, id, history_path);
-  if (row.status != EvalStatus::ok) {
+  if (row.outcome.status != EvalStatus::ok) {
     throw InputError(history_path + ": individual " + std::to_string(row.id) + " has status " +
-                     statusName(row.status) +
+                     statusName(row.outcome.status) +
                      " (a failed creature has no outcome to replay; pick one with status ok)");
   }
-  if (!export_path.empty() && settings.task.kind == TaskKind::synthetic)
-    throw Error(ExitCode::usage, "--export: the synthetic task has no bodies to record");
-  Genome genome = history.genome(row.id);
+  const Task& task = settings.task();
+  if (!export_path.empty() && !task.needsBody())
+    throw Error(ExitCode::usage, "--export: the " + task.name() + " task has no bodies to record");
+  const Genotype& genome = row.genome;
+  const double time_step = settings.physics().time_step;
 
   // the evaluation, seeded as the worker seeded it, observed when exporting
   std::uint64_t eval_seed = evaluationSeed(attributes.seed, row.id);
   std::optional<TrajectoryRecorder> recorder;
   if (!export_path.empty())
-    recorder.emplace(frameStrideFor(frame_rate, settings.physics.time_step));
-  Outcome outcome = evaluate(genome, settings.limits, settings.task, settings.physics, eval_seed,
-                             recorder ? &*recorder : nullptr);
+    recorder.emplace(frameStrideFor(frame_rate, time_step));
+  Outcome outcome = evaluate(genome, settings, eval_seed, recorder ? &*recorder : nullptr);
 
   // what was replayed
   std::printf("history        %s (cambrian %s, git %s, seed %llu)\n", history_path.c_str(),
@@ -214,25 +217,32 @@ int runReplay(int argc, char** argv) {
               static_cast<unsigned long long>(row.generation), originName(row.origin));
   std::printf("body           %d parts, %d joints, %d neurons\n", outcome.parts, outcome.joints,
               outcome.neurons);
-  std::printf("task           %s, %g s measured, step %g s\n", taskName(settings.task.kind),
-              settings.task.evaluation_time, settings.physics.time_step);
+  std::printf("task           %s, %g s measured, step %g s\n", task.name().c_str(),
+              settings.episode().evaluation_time, time_step);
   std::printf("eval seed      %llu\n", static_cast<unsigned long long>(eval_seed));
 
   // stored against replayed, bit for bit
   std::printf("%-14s %-24s %s\n", "", "stored", "replayed");
-  bool match = outcome.status == row.status;
-  std::printf("%-14s %-24s %s%s\n", "status", statusName(row.status), statusName(outcome.status),
-              match ? "" : "  DIFFERENT");
-  match = compareLine("fitness", row.fitness, outcome.fitness) && match;
-  for (std::size_t i = 0; i < kHistoryMeasureCount; ++i) {
-    const char* name = historyMeasures()[i].name;
-    double replayed = outcome.measure(name);
-    if (!std::isnan(row.measures[i]) || !std::isnan(replayed))
-      match = compareLine(name, row.measures[i], replayed) && match;
+  bool match = outcome.status == row.outcome.status;
+  std::printf("%-14s %-24s %s%s\n", "status", statusName(row.outcome.status),
+              statusName(outcome.status), match ? "" : "  DIFFERENT");
+  match = compareLine("fitness", row.fitness(), outcome.fitness) && match;
+  // every measure either side has, by name: the history's columns first
+  std::vector<std::string> names;
+  for (const MeasureInfo& measure : history.measures())
+    names.push_back(measure.name);
+  for (const Measure& measure : outcome.measures) {
+    if (std::find(names.begin(), names.end(), measure.name) == names.end())
+      names.push_back(measure.name);
   }
-  match =
-      compareLine("steps", static_cast<double>(row.steps), static_cast<double>(outcome.steps)) &&
-      match;
+  for (const std::string& name : names) {
+    double stored = row.outcome.measure(name), replayed = outcome.measure(name);
+    if (!std::isnan(stored) || !std::isnan(replayed))
+      match = compareLine(name.c_str(), stored, replayed) && match;
+  }
+  match = compareLine("steps", static_cast<double>(row.outcome.steps),
+                      static_cast<double>(outcome.steps)) &&
+          match;
   std::printf("wall time      %.4f s\n", outcome.wall_seconds);
 
   // the trajectory, written even when the replay differs (it shows what was replayed)
@@ -242,8 +252,8 @@ int runReplay(int argc, char** argv) {
     trajectory.source = history_path;
     trajectory.fitness = outcome.fitness;
     trajectory.status = statusName(outcome.status);
-    trajectory.task = taskName(settings.task.kind);
-    trajectory.genome_text = genomeToText(genome);
+    trajectory.task = task.name();
+    trajectory.genome_text = genome.encoding().toText(genome);
     writeTrajectory(export_path, trajectory);
     std::printf("export         %s (%zu frames of %zu parts at %g Hz)\n", export_path.c_str(),
                 trajectory.frameCount(), trajectory.partCount(), trajectory.frame_rate);
@@ -254,7 +264,7 @@ int runReplay(int argc, char** argv) {
                  "cambrian replay: error: %s: individual %llu replayed to fitness %a (%.17g), "
                  "stored %a (%.17g)\n",
                  history_path.c_str(), static_cast<unsigned long long>(row.id), outcome.fitness,
-                 outcome.fitness, row.fitness, row.fitness);
+                 outcome.fitness, row.fitness(), row.fitness());
     return static_cast<int>(ExitCode::replay_mismatch);
   }
   std::printf("replay         bit-identical\n");

@@ -1,4 +1,7 @@
+// cambrian: outcome names, lookups and the one byte form of an outcome.
 #include "cambrian/outcome.hpp"
+
+#include "core/outcome_bytes.hpp"
 
 #include <limits>
 
@@ -32,6 +35,56 @@ double Outcome::measure(const std::string& name) const {
       return m.value;
   }
   return std::numeric_limits<double>::quiet_NaN();
+}
+
+void writeOutcome(ByteWriter& w, const Outcome& o) {
+  w.u64(static_cast<std::uint64_t>(o.status));
+  w.f64(o.fitness);
+  w.u64(o.steps);
+  w.f64(o.wall_seconds);
+  w.i64(o.parts);
+  w.i64(o.joints);
+  w.i64(o.neurons);
+  w.text(o.message);
+  w.u64(o.measures.size());
+  for (const Measure& m : o.measures) {
+    w.text(m.name);
+    w.f64(m.value);
+  }
+}
+
+Outcome readOutcome(ByteReader& r) {
+  Outcome o;
+  r.context("status");
+  std::uint64_t status = r.u64();
+  if (status > static_cast<std::uint64_t>(EvalStatus::failed))
+    r.fail("status = " + std::to_string(status) + " is unknown");
+  o.status = static_cast<EvalStatus>(status);
+  r.context("fitness");
+  o.fitness = r.f64();
+  r.context("steps");
+  o.steps = r.u64();
+  r.context("wall_seconds");
+  o.wall_seconds = r.f64();
+  r.context("body counts");
+  o.parts = static_cast<int>(r.i64());
+  o.joints = static_cast<int>(r.i64());
+  o.neurons = static_cast<int>(r.i64());
+  r.context("message");
+  o.message = r.text();
+  r.context("measures");
+  std::uint64_t measures = r.u64();
+  // each measure needs at least a length word and a value
+  if (measures > r.remaining() / 16)
+    r.fail("measures = " + std::to_string(measures) + " is more than the bytes hold");
+  for (std::uint64_t i = 0; i < measures; ++i) {
+    r.context("measure " + std::to_string(i));
+    Measure m;
+    m.name = r.text();
+    m.value = r.f64();
+    o.measures.push_back(std::move(m));
+  }
+  return o;
 }
 
 }  // namespace cambrian

@@ -1,4 +1,4 @@
-#include "parallel/test_kill.hpp"
+#include "core/test_kill.hpp"
 
 #include "cambrian/error.hpp"
 

@@ -1,6 +1,7 @@
 #include "evolution/breeder.hpp"
 
-#include "cambrian/operators.hpp"
+#include "cambrian/error.hpp"
+#include "cambrian/rng.hpp"
 
 #include "evolution/selection.hpp"
 
@@ -22,17 +23,22 @@ BreedingPlan planBreeding(const EvolutionSettings& s) {
   return plan;
 }
 
-Breeder::Breeder(const EvolutionSettings& settings, const GenomeLimits& limits)
-    : settings_(settings), limits_(limits), plan_(planBreeding(settings)) {}
-
-Genome Breeder::tidy(Genome genome) const {
-  // Chaumont keeps unreachable nodes; otherwise they are collected
-  if (settings_.mutation.keep_unconnected)
-    return genome;
-  return removeUnreachableNodes(genome);
+Breeder::Breeder(const EvolutionSettings& settings, const Encoding& encoding)
+    : settings_(settings), encoding_(encoding), plan_(planBreeding(settings)) {
+  // every operator the plan uses must exist for the encoding
+  const std::pair<int, Variation> needs[] = {{plan_.mutations, Variation::mutation},
+                                             {plan_.crossovers, Variation::crossover},
+                                             {plan_.grafts, Variation::graft}};
+  static constexpr const char* kKeys[] = {
+      "evolution.mutation_fraction", "evolution.crossover_fraction", "evolution.graft_fraction"};
+  for (const auto& [count, variation] : needs) {
+    if (count > 0 && !encoding_.supports(variation))
+      throw ConfigError(std::string(kKeys[static_cast<int>(variation)]) + ": the encoding " +
+                        encoding_.name() + " has no such operator; set it to 0");
+  }
 }
 
-Population Breeder::initialPopulation(const std::vector<Genome>& seeds) {
+Population Breeder::initialPopulation(const std::vector<Genotype>& seeds) {
   Population population;
   population.generation = 0;
   population.individuals.reserve(static_cast<std::size_t>(settings_.population));
@@ -48,7 +54,7 @@ Population Breeder::initialPopulation(const std::vector<Genome>& seeds) {
       // streams (seed, random_genome, attempt, i)
       individual.origin = Origin::random;
       for (int attempt = 0;; ++attempt) {
-        individual.genome = randomGenome(limits_, settings_.seed, attempt, slot);
+        individual.genome = encoding_.random(settings_.seed, attempt, slot);
         if (acceptable(individual.genome, attempt))
           break;
       }
@@ -63,7 +69,8 @@ Population Breeder::initialPopulation(const std::vector<Genome>& seeds) {
       individual.origin = Origin::mutation;
       individual.parents = {first_id + source};
       for (int attempt = 0;; ++attempt) {
-        individual.genome = tidy(mutate(seeds[source], limits_, settings_.mutation, rng));
+        individual.genome =
+            encoding_.tidy(encoding_.mutate(seeds[source], settings_.mutation_rate, rng));
         if (acceptable(individual.genome, attempt))
           break;
       }
@@ -98,7 +105,6 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     copy.parents = {parent.id};
     copy.origin = Origin::elite;
     copy.genome = parent.genome;
-    copy.genome_bytes_cache = parent.genome_bytes_cache;
     copy.outcome = parent.outcome;
     copy.evaluated = true;
     next.individuals.push_back(std::move(copy));
@@ -114,10 +120,6 @@ Population Breeder::nextGeneration(const Population& evaluated) {
   auto pickParent = [&]() -> const Individual& {
     return evaluated.individuals[ranking[picks[next_pick++]]];
   };
-
-  // the weaker mutation that may follow crossover and grafting (Chaumont §5.7)
-  MutationSettings post = settings_.mutation;
-  post.parameter_rate = settings_.post_crossover_mutation_rate;
 
   // offspring slot i uses the stream (seed, variation, g, i)
   int offspring = plan_.mutations + plan_.crossovers + plan_.grafts;
@@ -135,17 +137,18 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     for (int attempt = 0;; ++attempt) {
       if (child.origin == Origin::mutation) {
         // asexual: copy and mutate each parameter with mutation_rate
-        child.genome = mutate(a->genome, limits_, settings_.mutation, rng);
+        child.genome = encoding_.mutate(a->genome, settings_.mutation_rate, rng);
       } else {
-        // sexual: crossover or graft, then maybe a light mutation
-        child.genome = child.origin == Origin::crossover
-                           ? crossover(a->genome, b->genome, limits_, rng)
-                           : graft(a->genome, b->genome, limits_, rng);
+        // sexual: crossover or graft, then maybe the weaker mutation (Chaumont 5.7)
+        Variation variation =
+            child.origin == Origin::crossover ? Variation::crossover : Variation::graft;
+        child.genome = encoding_.combine(variation, a->genome, b->genome, rng);
         if (rng.bernoulli(settings_.post_crossover_mutation_chance)) {
-          child.genome = mutate(child.genome, limits_, post, rng);
+          child.genome =
+              encoding_.mutate(child.genome, settings_.post_crossover_mutation_rate, rng);
         }
       }
-      child.genome = tidy(std::move(child.genome));
+      child.genome = encoding_.tidy(child.genome);
       if (acceptable(child.genome, attempt))
         break;
     }

@@ -1,7 +1,8 @@
-// cambrian: the generational Sims / Chaumont scheme — elitism plus mutation, crossover, grafting.
+// cambrian: the generational Sims / Chaumont scheme — elitism plus mutation, crossover, grafting —
+// over genomes of any encoding (through the Encoding interface).
 #pragma once
 
-#include "cambrian/genome.hpp"
+#include "cambrian/encoding.hpp"
 
 #include "evolution/evolution_settings.hpp"
 #include "evolution/population.hpp"
@@ -27,18 +28,20 @@ struct BreedingPlan {
 BreedingPlan planBreeding(const EvolutionSettings& settings);
 
 /// Whether a new genome makes a body that may be born (Chaumont et al. 5.5).
-using ViabilityCheck = std::function<bool(const Genome&)>;
+using ViabilityCheck = std::function<bool(const Genotype&)>;
 
 /// Makes generations. Every random decision is keyed by (run seed, purpose) and counted by
 /// (generation, offspring slot), so a generation is a pure function of the previous one's genomes
 /// and fitnesses — never of rank count or arrival order. Ids are handed out in slot order.
 class Breeder {
  public:
-  /// `settings` must have passed validateEvolutionSettings().
-  Breeder(const EvolutionSettings& settings, const GenomeLimits& limits);
+  /// `settings` must have passed validateEvolutionSettings(); `encoding` (configured) makes and
+  /// varies the genomes and must outlive the breeder. Throws ConfigError when the plan needs an
+  /// operator the encoding lacks.
+  Breeder(const EvolutionSettings& settings, const Encoding& encoding);
 
   /// Generation 0: random genomes, or the seeds followed by mutated copies of them (round robin).
-  Population initialPopulation(const std::vector<Genome>& seeds = {});
+  Population initialPopulation(const std::vector<Genotype>& seeds = {});
 
   /// The next generation from an evaluated one: the best `elites` copied with their outcomes
   /// (not re-evaluated), then mutation, crossover and graft offspring of selected parents.
@@ -61,12 +64,11 @@ class Breeder {
   const BreedingPlan& plan() const { return plan_; }
 
  private:
-  Genome tidy(Genome genome) const;
-  EvolutionSettings settings_;
-  GenomeLimits limits_;
-  bool acceptable(const Genome& genome, int attempt) const {
+  bool acceptable(const Genotype& genome, int attempt) const {
     return !viable_ || attempt + 1 >= max_attempts_ || viable_(genome);
   }
+  EvolutionSettings settings_;
+  const Encoding& encoding_;
   BreedingPlan plan_;
   std::uint64_t next_id_ = 0;
   ViabilityCheck viable_;

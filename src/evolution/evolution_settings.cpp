@@ -1,29 +1,14 @@
+// cambrian: the [evolution] keys and the rules their values must keep.
 #include "evolution/evolution_settings.hpp"
 
 #include "cambrian/error.hpp"
+
+#include "core/settings.hpp"
 
 #include <cmath>
 #include <sstream>
 
 namespace cambrian {
-
-namespace {
-
-// throws ConfigError "evolution.<key> = value: rule"
-void require(bool ok, const std::string& key, double value, const std::string& rule) {
-  if (!ok || std::isnan(value)) {
-    std::ostringstream message;
-    message << "evolution." << key << " = " << value << ": " << rule;
-    throw ConfigError(message.str());
-  }
-}
-
-// a probability: finite and in [0, 1]
-void requireProbability(const std::string& key, double value) {
-  require(value >= 0 && value <= 1, key, value, "must be in [0, 1]");
-}
-
-}  // namespace
 
 const char* selectionMethodName(SelectionMethod method) {
   switch (method) {
@@ -41,61 +26,86 @@ const char* selectionMethodName(SelectionMethod method) {
   return "unknown";
 }
 
-SelectionMethod selectionMethodFromName(const std::string& name) {
-  // every method by its name
-  for (SelectionMethod method :
-       {SelectionMethod::truncation, SelectionMethod::tournament, SelectionMethod::roulette,
-        SelectionMethod::sus, SelectionMethod::rank}) {
-    if (name == selectionMethodName(method))
-      return method;
-  }
-  throw ConfigError("evolution.selection = " + name +
-                    ": must be truncation, tournament, roulette, sus or rank");
-}
+void EvolutionSettings::declareSettings(SettingsSchema& s) {
+  EvolutionSettings& e = *this;
+  s.describeSection("evolution", "[evolution] genetic algorithm");
+  auto probability = [&s](const char* key, double& value, const char* help) {
+    s.add(key, value, help)
+        .require([&value] { return value >= 0 && value <= 1; }, "must be in [0, 1]");
+  };
 
-void validateEvolutionSettings(const EvolutionSettings& s) {
   // sizes
-  require(s.population >= 2 && s.population <= 1000000, "population", s.population,
-          "must be in 2..1000000");
-  require(s.generations >= 1 && s.generations <= 1000000, "generations", s.generations,
-          "must be in 1..1000000");
+  s.add("evolution.population", e.population, "individuals per generation")
+      .require([&e] { return e.population >= 2 && e.population <= 1000000; },
+               "must be in 2..1000000");
+  s.add("evolution.generations", e.generations, "generations to run, the first included")
+      .require([&e] { return e.generations >= 1 && e.generations <= 1000000; },
+               "must be in 1..1000000")
+      .runOnly();
 
   // reproduction plan
-  require(s.elite_fraction >= 0 && s.elite_fraction < 1, "elite_fraction", s.elite_fraction,
-          "must be in [0, 1): some offspring must be bred");
-  requireProbability("mutation_fraction", s.mutation_fraction);
-  requireProbability("crossover_fraction", s.crossover_fraction);
-  requireProbability("graft_fraction", s.graft_fraction);
-  double sum = s.mutation_fraction + s.crossover_fraction + s.graft_fraction;
-  require(std::fabs(sum - 1) <= 1e-9,
-          "mutation_fraction + evolution.crossover_fraction + evolution.graft_fraction", sum,
-          "must sum to 1");
-  requireProbability("post_crossover_mutation_chance", s.post_crossover_mutation_chance);
-  requireProbability("post_crossover_mutation_rate", s.post_crossover_mutation_rate);
-
-  // mutation
-  const MutationSettings& m = s.mutation;
-  requireProbability("mutation_rate", m.parameter_rate);
-  require(m.perturbation > 0 && m.perturbation <= 10, "mutation_perturbation", m.perturbation,
-          "must be in (0, 10]");
-  requireProbability("add_node_rate", m.add_node_rate);
-  requireProbability("remove_node_rate", m.remove_node_rate);
-  requireProbability("add_connection_rate", m.add_connection_rate);
-  requireProbability("remove_connection_rate", m.remove_connection_rate);
-  requireProbability("repoint_rate", m.repoint_rate);
-  requireProbability("add_neuron_rate", m.add_neuron_rate);
-  requireProbability("remove_neuron_rate", m.remove_neuron_rate);
+  s.add("evolution.elite_fraction", e.elite_fraction,
+        "share of the best kept unchanged and not re-evaluated (0..1)")
+      .require([&e] { return e.elite_fraction >= 0 && e.elite_fraction < 1; },
+               "must be in [0, 1): some offspring must be bred");
+  probability("evolution.mutation_fraction", e.mutation_fraction,
+              "share of offspring made by mutation (the three fractions sum to 1)");
+  probability("evolution.crossover_fraction", e.crossover_fraction,
+              "share of offspring made by crossover");
+  probability("evolution.graft_fraction", e.graft_fraction, "share of offspring made by grafting");
+  probability("evolution.mutation_rate", e.mutation_rate,
+              "chance each parameter of an asexual offspring is perturbed (0..1)");
+  probability("evolution.post_crossover_mutation_chance", e.post_crossover_mutation_chance,
+              "chance an offspring of crossover or grafting is then mutated");
+  probability("evolution.post_crossover_mutation_rate", e.post_crossover_mutation_rate,
+              "per-parameter rate of that mutation");
 
   // selection
-  const SelectionSettings& sel = s.selection;
-  require(sel.truncation_fraction > 0 && sel.truncation_fraction <= 1, "truncation_fraction",
-          sel.truncation_fraction, "must be in (0, 1]");
-  require(sel.tournament_size >= 1 && sel.tournament_size <= s.population, "tournament_size",
-          sel.tournament_size, "must be in 1..population");
-  require(sel.rank_pressure >= 1 && sel.rank_pressure <= 2, "rank_pressure", sel.rank_pressure,
-          "must be in [1, 2]");
-  require(static_cast<int>(s.seed_genomes.size()) <= s.population, "seed_genomes",
-          static_cast<double>(s.seed_genomes.size()), "more seed genomes than the population");
+  s.addChoice("evolution.selection", e.selection.method,
+              {{"truncation", SelectionMethod::truncation},
+               {"tournament", SelectionMethod::tournament},
+               {"roulette", SelectionMethod::roulette},
+               {"sus", SelectionMethod::sus},
+               {"rank", SelectionMethod::rank}},
+              "parent selection: truncation | tournament | roulette | sus | rank");
+  SelectionSettings& sel = e.selection;
+  s.add("evolution.truncation_fraction", sel.truncation_fraction,
+        "truncation: share of the best that may be parents")
+      .require([&sel] { return sel.truncation_fraction > 0 && sel.truncation_fraction <= 1; },
+               "must be in (0, 1]");
+  s.add("evolution.tournament_size", sel.tournament_size, "tournament: contestants per pick")
+      .require(
+          [&e] {
+            return e.selection.tournament_size >= 1 && e.selection.tournament_size <= e.population;
+          },
+          "must be in 1..population");
+  s.add("evolution.rank_pressure", sel.rank_pressure, "rank: expected picks of the best (1..2)")
+      .require([&sel] { return sel.rank_pressure >= 1 && sel.rank_pressure <= 2; },
+               "must be in [1, 2]");
+  s.add("evolution.seed_genomes", e.seed_genomes,
+        "genome files the first generation starts from (repeat the key or separate by spaces)")
+      .require([&e] { return static_cast<int>(e.seed_genomes.size()) <= e.population; },
+               "more seed genomes than the population");
+  s.addSeed("run.seed", e.seed, "run seed, 0..2^64-1 (same seed, same run)");
+
+  // the rule across keys: the offspring shares add up
+  s.addCheck([&e] {
+    double sum = e.mutation_fraction + e.crossover_fraction + e.graft_fraction;
+    if (!(std::fabs(sum - 1) <= 1e-9)) {
+      std::ostringstream message;
+      message << "evolution.mutation_fraction + evolution.crossover_fraction + "
+                 "evolution.graft_fraction = "
+              << sum << ": must sum to 1";
+      throw ConfigError(message.str());
+    }
+  });
+}
+
+void validateEvolutionSettings(const EvolutionSettings& settings) {
+  EvolutionSettings copy = settings;
+  SettingsSchema schema;
+  copy.declareSettings(schema);
+  schema.check();
 }
 
 }  // namespace cambrian

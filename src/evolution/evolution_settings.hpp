@@ -1,13 +1,13 @@
 // cambrian: the settings of the genetic algorithm (the [evolution] section of an experiment).
 #pragma once
 
-#include "cambrian/operators.hpp"
-
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace cambrian {
+
+class SettingsSchema;
 
 /// How parents are chosen from the ranked survivors of a generation.
 enum class SelectionMethod : std::uint8_t {
@@ -20,8 +20,6 @@ enum class SelectionMethod : std::uint8_t {
 
 /// Lower-case name of a selection method ("tournament").
 const char* selectionMethodName(SelectionMethod method);
-/// Parses a selection method name; throws ConfigError naming evolution.selection and the value.
-SelectionMethod selectionMethodFromName(const std::string& name);
 
 /// Parameters of the parent selection operators.
 struct SelectionSettings {
@@ -31,7 +29,8 @@ struct SelectionSettings {
   double rank_pressure = 1.7;        ///< expected offspring of the best under linear ranking
 };
 
-/// Everything the generational Sims / Chaumont scheme needs.
+/// Everything the generational Sims / Chaumont scheme needs. The encoding's own operator
+/// settings (structural mutation rates) are the encoding's.
 struct EvolutionSettings {
   int population = 100;             ///< individuals per generation (P)
   int generations = 30;             ///< generations to run, the initial one included (G)
@@ -39,16 +38,21 @@ struct EvolutionSettings {
   double mutation_fraction = 0.4;   ///< share of the non-elite offspring made by mutation
   double crossover_fraction = 0.3;  ///< share made by crossover
   double graft_fraction = 0.3;      ///< share made by grafting
+  double mutation_rate = 0.10;      ///< chance each parameter of a mutated offspring is perturbed
   double post_crossover_mutation_chance =
       0.1;                                     ///< chance an offspring of crossover / graft mutates
-  double post_crossover_mutation_rate = 0.05;  ///< per-site rate of that mutation
-  MutationSettings mutation;  ///< asexual mutation (parameter_rate 0.10 by default)
+  double post_crossover_mutation_rate = 0.05;  ///< per-parameter rate of that mutation
   SelectionSettings selection;
   std::vector<std::string> seed_genomes;  ///< genome files the first generation starts from
   std::uint64_t seed = 1;                 ///< run seed: keys every random stream of the run
+
+  /// Declares the [evolution] keys (and run.seed), bound to this object, with their ranges;
+  /// evolution.generations is run-only (a resumed run may extend a finished one).
+  void declareSettings(SettingsSchema& schema);
 };
 
-/// Checks every range; throws ConfigError naming the key (evolution.<name>) and the value.
+/// Checks every range; throws ConfigError naming the key (evolution.<name>) and the value. The
+/// same rules declareSettings() attaches to the keys.
 void validateEvolutionSettings(const EvolutionSettings& settings);
 
 }  // namespace cambrian

@@ -31,12 +31,6 @@ double Individual::fitness() const {
   return outcome.fitness;
 }
 
-const std::vector<std::uint8_t>& Individual::genomeBytes() const {
-  if (genome_bytes_cache.empty())
-    genome_bytes_cache = serializeGenome(genome);
-  return genome_bytes_cache;
-}
-
 std::vector<std::size_t> Population::ranking() const {
   // fitness descending, then id ascending: a total order independent of arrival order
   std::vector<std::size_t> order(individuals.size());

@@ -1,7 +1,8 @@
-// cambrian: individuals and the population rank 0 holds.
+// cambrian: individuals and the population rank 0 holds. An Individual is the one record of
+// a creature: the run, the history, the checkpoint and the tables all keep it as it is.
 #pragma once
 
-#include "cambrian/genome.hpp"
+#include "cambrian/encoding.hpp"
 #include "cambrian/outcome.hpp"
 
 #include <cstdint>
@@ -25,7 +26,7 @@ struct Individual {
   std::uint64_t generation = 0;        ///< generation it belongs to
   std::vector<std::uint64_t> parents;  ///< 0 (random, seed), 1 (elite, mutation) or 2 ids
   Origin origin = Origin::random;
-  Genome genome;
+  Genotype genome;
   Outcome outcome;          ///< filled by evaluation (or copied, for elites)
   bool evaluated = false;   ///< true once outcome holds a result for this genome
   double eval_seconds = 0;  ///< wall time of its evaluation; 0 when copied
@@ -34,12 +35,9 @@ struct Individual {
   /// The fitness used for selection: the outcome's, or kWorstFitness before evaluation and for
   /// a non-finite value (so ranking is a total order).
   double fitness() const;
-  /// serializeGenome(genome), computed on first use and kept: rank 0 needs the bytes for the
-  /// request, the digest, the history and the checkpoint. A genome is never changed once it is
-  /// bred; code that assigns `genome` after the bytes were read must clear `genome_bytes_cache`.
-  const std::vector<std::uint8_t>& genomeBytes() const;
-
-  mutable std::vector<std::uint8_t> genome_bytes_cache;  ///< empty until genomeBytes()
+  /// The genome's byte form, made once and kept by the genotype: rank 0 needs the bytes for the
+  /// request, the digest, the history and the checkpoint.
+  const std::vector<std::uint8_t>& genomeBytes() const { return genome.bytes(); }
 };
 
 /// A generation of individuals in creation order (ids increasing).

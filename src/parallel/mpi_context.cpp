@@ -7,7 +7,6 @@
 #include <ctime>
 #include <iostream>
 #include <list>
-#include <sys/resource.h>
 
 namespace cambrian {
 
@@ -165,13 +164,6 @@ void Backoff::wait() {
   timespec interval{micros_ / 1000000, (micros_ % 1000000) * 1000};
   nanosleep(&interval, nullptr);
   micros_ = std::min(ceiling_, micros_ * 2);
-}
-
-double processCpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * t.tv_usec; };
-  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
 }  // namespace cambrian

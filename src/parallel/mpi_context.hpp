@@ -97,7 +97,4 @@ class Backoff {
   long micros_ = kMin;
 };
 
-/// CPU time (user + system) this process has used so far, seconds (getrusage).
-double processCpuSeconds();
-
 }  // namespace cambrian

@@ -1,10 +1,12 @@
 #include "parallel/scheduler.hpp"
 
 #include "cambrian/error.hpp"
+#include "cambrian/evaluate.hpp"
 #include "cambrian/rng.hpp"
 
+#include "core/settings.hpp"
+#include "core/test_kill.hpp"
 #include "parallel/mpi_context.hpp"
-#include "parallel/test_kill.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -46,20 +48,17 @@ void store(Individual& individual, const Outcome& outcome, int rank) {
 
 }  // namespace
 
-std::uint64_t evaluationSeed(std::uint64_t run_seed, std::uint64_t id) {
-  Rng rng(run_seed, RngPurpose::evaluation, 0, id);
-  return rng.nextU64();
-}
-
-DispatchOrder dispatchOrderFromName(const std::string& name) {
-  if (name == "largest_first")
-    return DispatchOrder::largest_first;
-  if (name == "shuffled")
-    return DispatchOrder::shuffled;
-  if (name == "smallest_first")
-    return DispatchOrder::smallest_first;
-  throw ConfigError("run.dispatch_order = " + name +
-                    ": must be largest_first, shuffled or smallest_first");
+void DispatchSettings::declareSettings(SettingsSchema& s) {
+  s.addChoice("run.dispatch_order", order,
+              {{"largest_first", DispatchOrder::largest_first},
+               {"shuffled", DispatchOrder::shuffled},
+               {"smallest_first", DispatchOrder::smallest_first}},
+              "order in which a generation's creatures are handed out: largest_first (genome "
+              "size) | shuffled | smallest_first; results are the same, only the span changes")
+      .runOnly();
+  s.addSeed("run.dispatch_seed", seed,
+            "shuffled: seed of the per-generation permutations (0 = the run seed)")
+      .runOnly();
 }
 
 std::vector<std::size_t> schedulingOrder(const Population& population,
@@ -80,12 +79,15 @@ std::vector<std::size_t> schedulingOrder(const Population& population,
     return order;
   }
 
-  // by genome size, largest or smallest first, ties by id
+  // by genome size (the encoding's genes + links), largest or smallest first, ties by id
   bool largest = dispatch.order == DispatchOrder::largest_first;
-  auto size = [&](std::size_t i) {
-    const Genome& g = population.individuals[i].genome;
-    return g.nodes.size() + g.connections.size();
-  };
+  std::vector<std::size_t> sizes(population.individuals.size(), 0);
+  for (std::size_t i : order) {
+    const Genotype& genome = population.individuals[i].genome;
+    GenomeSize genome_size = genome.encoding().size(genome);
+    sizes[i] = genome_size.genes + genome_size.links;
+  }
+  auto size = [&](std::size_t i) { return sizes[i]; };
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     if (size(a) != size(b))
       return largest ? size(a) > size(b) : size(a) < size(b);

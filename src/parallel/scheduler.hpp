@@ -14,6 +14,7 @@
 namespace cambrian {
 
 class MpiContext;
+class SettingsSchema;
 
 /// What evaluating one generation cost.
 struct EvaluationSpan {
@@ -24,16 +25,13 @@ struct EvaluationSpan {
   double dispatch_seconds = 0;  ///< rank 0 handing out and taking in (its waits left out)
 };
 
-/// The seed handed to the evaluation of individual `id` of a run: a pure function of both.
-std::uint64_t evaluationSeed(std::uint64_t run_seed, std::uint64_t id);
-
 /// The order in which a generation's pending individuals are handed out (run.dispatch_order).
 /// Results are stored by id, so no order changes them: only which worker gets which creature
 /// when, and so the span of a generation.
 enum class DispatchOrder : std::uint8_t {
-  largest_first,   ///< genome nodes + connections descending, ties by id: longest expected first
+  largest_first,   ///< genes + links (Encoding::size) descending, ties by id: longest
   shuffled,        ///< a permutation drawn per generation from the dispatch seed
-  smallest_first,  ///< genome nodes + connections ascending, ties by id
+  smallest_first,  ///< genes + links ascending, ties by id
 };
 
 /// How pending individuals are ordered.
@@ -42,14 +40,13 @@ struct DispatchSettings {
   /// shuffled: the permutation of generation g comes from Rng(seed, evaluation, g, 2^64 - 1)
   /// (a counter no evaluation seed uses); 0 = the run seed
   std::uint64_t seed = 0;
+
+  /// Declares run.dispatch_order and run.dispatch_seed (both run-only), bound to this object.
+  void declareSettings(SettingsSchema& schema);
 };
 
-/// "largest_first" | "shuffled" | "smallest_first"; throws ConfigError naming run.dispatch_order
-/// and the value otherwise.
-DispatchOrder dispatchOrderFromName(const std::string& name);
-
 /// Order in which pending individuals are handed out (`dispatch.order`; by default longest
-/// expected first: genome nodes + connections descending, ties by id). A pure function of the
+/// expected first: genes + links descending, ties by id). A pure function of the
 /// population's genomes, ids, evaluated flags and generation, `dispatch` and `run_seed`.
 /// Returns indices into the population.
 std::vector<std::size_t> schedulingOrder(const Population& population,

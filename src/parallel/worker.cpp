@@ -1,7 +1,9 @@
 #include "parallel/worker.hpp"
 
+#include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
 
+#include "core/settings.hpp"
 #include "parallel/mpi_context.hpp"
 
 #include <chrono>
@@ -11,6 +13,15 @@
 
 namespace cambrian {
 
+void WorkerSettings::declareTestingSettings(SettingsSchema& s) {
+  s.add("run.fail_every", fail_every,
+        "testing: workers fail every creature whose id is a multiple of this (0 = never)");
+  s.add("run.test_worker_abort_at", test_abort_at,
+        "testing: the worker rank that receives the creature with this id stops with an "
+        "unrecoverable error, ending the job with exit code 8 (0 = never)")
+      .runOnly();
+}
+
 EvalResult evaluateRequest(const EvalRequest& request, const WorkerSettings& settings, int rank,
                            std::ostream& log) {
   EvalResult result;
@@ -18,13 +29,12 @@ EvalResult evaluateRequest(const EvalRequest& request, const WorkerSettings& set
   auto start = std::chrono::steady_clock::now();
   try {
     // the creature, then its evaluation
-    Genome genome = deserializeGenome(request.genome.data(), request.genome.size());
+    Genotype genome = decodeGenome(request.genome);
     if (settings.fail_every > 0 && request.id % settings.fail_every == 0) {
       throw std::runtime_error(
           "injected failure (run.fail_every = " + std::to_string(settings.fail_every) + ")");
     }
-    result.outcome =
-        evaluate(genome, settings.limits, settings.task, settings.physics, request.eval_seed);
+    result.outcome = evaluate(genome, settings.creature, request.eval_seed);
   } catch (const std::exception& e) {
     // a failed outcome, never a dead rank
     result.outcome = Outcome{};

@@ -2,7 +2,6 @@
 #pragma once
 
 #include "cambrian/evaluate.hpp"
-#include "cambrian/genome.hpp"
 
 #include "parallel/messages.hpp"
 #include "parallel/mpi_context.hpp"
@@ -12,11 +11,11 @@
 
 namespace cambrian {
 
+class SettingsSchema;
+
 /// How a worker evaluates creatures (the same on every rank).
 struct WorkerSettings {
-  GenomeLimits limits;
-  TaskSettings task;
-  PhysicsSettings physics;
+  CreatureSettings creature;  ///< encoding, task, physics, environment
   /// Testing aid: throw inside the evaluation of every creature whose id is a multiple of this
   /// (0 = never), to exercise the failure path.
   std::uint64_t fail_every = 0;
@@ -24,6 +23,10 @@ struct WorkerSettings {
   /// unrecoverable Error(worker_failure), outside the per-creature catch (0 = never). Only worker
   /// ranks serve requests, so a one-rank (in-process) run never stops for it.
   std::uint64_t test_abort_at = 0;
+
+  /// Declares the two testing keys run.fail_every and run.test_worker_abort_at (run-only), bound
+  /// to this object; the creature settings declare their own.
+  void declareTestingSettings(SettingsSchema& schema);
 };
 
 /// Evaluates one request. Never throws: an exception (bad genome bytes, an error inside

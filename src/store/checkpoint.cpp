@@ -1,9 +1,12 @@
 #include "store/checkpoint.hpp"
 
+#include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
-#include "cambrian/genome.hpp"
 #include "cambrian/version.hpp"
 
+#include "core/bytes.hpp"
+#include "core/hash.hpp"
+#include "core/outcome_bytes.hpp"
 #include "store/hdf5_io.hpp"
 #include "store/history.hpp"
 
@@ -15,8 +18,6 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
-#include <set>
-#include <sstream>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
@@ -28,8 +29,37 @@ using namespace hdf5;
 
 namespace {
 
-// the columns of /population, as flat vectors
+// the columns of /population (version 2): one row per individual, genomes and outcomes in
+// their byte forms
 struct Columns {
+  std::vector<std::uint64_t> id, generation, parent_a, parent_b, genome_offset, genome_size,
+      outcome_offset, outcome_size;
+  std::vector<std::uint8_t> origin, evaluated, genome_bytes, outcome_bytes;
+  std::vector<double> eval_seconds;
+  std::vector<std::int32_t> worker_rank;
+};
+
+// calls visit(name, column) for every column, in the fixed order the state hash uses
+template <class C, class Visit>
+void forEachColumn(C& c, Visit visit) {
+  visit("id", c.id);
+  visit("generation", c.generation);
+  visit("parent_a", c.parent_a);
+  visit("parent_b", c.parent_b);
+  visit("origin", c.origin);
+  visit("evaluated", c.evaluated);
+  visit("eval_seconds", c.eval_seconds);
+  visit("worker_rank", c.worker_rank);
+  visit("genome_offset", c.genome_offset);
+  visit("genome_size", c.genome_size);
+  visit("genome_bytes", c.genome_bytes);
+  visit("outcome_offset", c.outcome_offset);
+  visit("outcome_size", c.outcome_size);
+  visit("outcome_bytes", c.outcome_bytes);
+}
+
+// the columns of version 1 (read only): every outcome field a column of its own
+struct ColumnsV1 {
   std::vector<std::uint64_t> id, generation, parent_a, parent_b, steps, genome_offset, genome_size,
       message_offset, message_size, measure_count;
   std::vector<std::uint8_t> origin, evaluated, status, genome_bytes, message_bytes, measure_names;
@@ -37,9 +67,8 @@ struct Columns {
   std::vector<std::int32_t> parts, joints, neurons, worker_rank;
 };
 
-// calls visit(name, column) for every column, in the fixed order the state hash uses
 template <class C, class Visit>
-void forEachColumn(C& c, Visit visit) {
+void forEachColumnV1(C& c, Visit visit) {
   visit("id", c.id);
   visit("generation", c.generation);
   visit("parent_a", c.parent_a);
@@ -66,44 +95,35 @@ void forEachColumn(C& c, Visit visit) {
   visit("measure_values", c.measure_values);
 }
 
-// FNV-1a 64 over raw bytes, continued from `hash`
-std::uint64_t fnv1a(std::uint64_t hash, const void* data, std::size_t size) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= p[i];
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
-
 // the hash of the scalar state and every column (detects corruption the HDF5 layer misses)
-std::uint64_t stateHash(const CheckpointState& s, const Columns& columns) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  hash = fnv1a(hash, s.config_text.data(), s.config_text.size());
+template <class C, class ForEach>
+std::uint64_t stateHash(const CheckpointState& s, const C& columns, ForEach forEach) {
+  Fnv1a hash;
+  hash.add(s.config_text.data(), s.config_text.size());
   for (std::uint64_t v :
        {s.seed, s.next_generation, s.next_id, s.digest, s.population.generation}) {
-    hash = fnv1a(hash, &v, sizeof v);
+    hash.add(&v, sizeof v);
   }
-  forEachColumn(columns, [&](const char*, const auto& values) {
+  forEach(columns, [&](const char*, const auto& values) {
     std::uint64_t n = values.size();
-    hash = fnv1a(hash, &n, sizeof n);
-    hash = fnv1a(hash, values.data(), values.size() * sizeof(values[0]));
+    hash.add(&n, sizeof n);
+    hash.add(values.data(), values.size() * sizeof(values[0]));
   });
-  return hash;
+  return hash.value();
 }
 
-// appends text and returns (offset, size) in the stream
-void appendBytes(std::vector<std::uint8_t>& stream, const void* data, std::size_t size,
+// appends bytes to a stream and their (offset, size)
+void appendBytes(std::vector<std::uint8_t>& stream, const std::vector<std::uint8_t>& bytes,
                  std::vector<std::uint64_t>& offsets, std::vector<std::uint64_t>& sizes) {
   offsets.push_back(stream.size());
-  sizes.push_back(size);
-  const auto* p = static_cast<const std::uint8_t*>(data);
-  stream.insert(stream.end(), p, p + size);
+  sizes.push_back(bytes.size());
+  stream.insert(stream.end(), bytes.begin(), bytes.end());
 }
 
 // the population as columns
 Columns toColumns(const Population& population) {
   Columns c;
+  std::vector<std::uint8_t> outcome;
   for (const Individual& i : population.individuals) {
     c.id.push_back(i.id);
     c.generation.push_back(i.generation);
@@ -111,80 +131,102 @@ Columns toColumns(const Population& population) {
     c.parent_b.push_back(i.parents.size() > 1 ? i.parents[1] : kNoId);
     c.origin.push_back(static_cast<std::uint8_t>(i.origin));
     c.evaluated.push_back(i.evaluated ? 1 : 0);
-    const Outcome& o = i.outcome;
-    c.fitness.push_back(o.fitness);
-    c.status.push_back(static_cast<std::uint8_t>(o.status));
-    c.steps.push_back(o.steps);
-    c.outcome_wall_seconds.push_back(o.wall_seconds);
-    c.parts.push_back(o.parts);
-    c.joints.push_back(o.joints);
-    c.neurons.push_back(o.neurons);
     c.eval_seconds.push_back(i.eval_seconds);
     c.worker_rank.push_back(i.worker_rank);
-    const std::vector<std::uint8_t>& genome = i.genomeBytes();
-    appendBytes(c.genome_bytes, genome.data(), genome.size(), c.genome_offset, c.genome_size);
-    appendBytes(c.message_bytes, o.message.data(), o.message.size(), c.message_offset,
-                c.message_size);
-    // measures: names '\0'-terminated in one stream, values in another
-    c.measure_count.push_back(o.measures.size());
-    for (const Measure& m : o.measures) {
-      c.measure_names.insert(c.measure_names.end(), m.name.begin(), m.name.end());
-      c.measure_names.push_back(0);
-      c.measure_values.push_back(m.value);
-    }
+    appendBytes(c.genome_bytes, i.genomeBytes(), c.genome_offset, c.genome_size);
+    outcome.clear();
+    ByteWriter writer(outcome);
+    writeOutcome(writer, i.outcome);
+    appendBytes(c.outcome_bytes, outcome, c.outcome_offset, c.outcome_size);
   }
   return c;
 }
 
-// the population from columns; throws std::runtime_error describing an inconsistency
+// the bytes [offset, offset + size) of a stream; throws std::runtime_error past its end
+const std::uint8_t* slice(const std::vector<std::uint8_t>& stream, std::uint64_t offset,
+                          std::uint64_t size, std::size_t row, const char* what) {
+  if (offset > stream.size() || size > stream.size() - offset)
+    throw std::runtime_error("/population row " + std::to_string(row) + ": " + what +
+                             " offset past the end of its byte stream");
+  return stream.data() + offset;
+}
+
+// the individual fields every version stores alike
+template <class C>
+Individual individualFrom(const C& c, std::size_t k) {
+  Individual i;
+  i.id = c.id[k];
+  i.generation = c.generation[k];
+  if (c.parent_a[k] != kNoId)
+    i.parents.push_back(c.parent_a[k]);
+  if (c.parent_b[k] != kNoId)
+    i.parents.push_back(c.parent_b[k]);
+  if (c.origin[k] > static_cast<std::uint8_t>(Origin::graft))
+    throw std::runtime_error("/population row " + std::to_string(k) + ": origin out of range");
+  i.origin = static_cast<Origin>(c.origin[k]);
+  i.evaluated = c.evaluated[k] != 0;
+  i.eval_seconds = c.eval_seconds[k];
+  i.worker_rank = c.worker_rank[k];
+  i.genome = decodeGenome(slice(c.genome_bytes, c.genome_offset[k], c.genome_size[k], k, "genome"),
+                          c.genome_size[k]);
+  return i;
+}
+
+// whether every per-row column of `c` has `n` rows (the byte streams aside)
+template <class C, class ForEach>
+bool sameLength(const C& c, std::size_t n, ForEach forEach) {
+  bool same = true;
+  forEach(c, [&](const char* name, const auto& values) {
+    std::string column = name;
+    bool stream =
+        column.ends_with("_bytes") || column == "measure_names" || column == "measure_values";
+    if (!stream && values.size() != n)
+      same = false;
+  });
+  return same;
+}
+
+// the population from version-2 columns; throws std::runtime_error describing an inconsistency
 Population fromColumns(const Columns& c, std::uint64_t generation) {
   Population population;
   population.generation = generation;
-  std::size_t n = c.id.size();
-  bool same_length = true;
-  forEachColumn(c, [&](const char* name, const auto& values) {
-    std::string column = name;
-    if (column != "genome_bytes" && column != "message_bytes" && column != "measure_names" &&
-        column != "measure_values" && values.size() != n)
-      same_length = false;
-  });
-  if (!same_length)
+  const std::size_t n = c.id.size();
+  if (!sameLength(c, n, [](auto& columns, auto visit) { forEachColumn(columns, visit); }))
+    throw std::runtime_error("/population columns differ in length");
+  for (std::size_t k = 0; k < n; ++k) {
+    Individual i = individualFrom(c, k);
+    ByteReader reader(slice(c.outcome_bytes, c.outcome_offset[k], c.outcome_size[k], k, "outcome"),
+                      c.outcome_size[k], "/population row " + std::to_string(k) + " outcome");
+    i.outcome = readOutcome(reader);
+    reader.expectEnd();
+    population.individuals.push_back(std::move(i));
+  }
+  return population;
+}
+
+// the population from version-1 columns
+Population fromColumnsV1(const ColumnsV1& c, std::uint64_t generation) {
+  Population population;
+  population.generation = generation;
+  const std::size_t n = c.id.size();
+  if (!sameLength(c, n, [](auto& columns, auto visit) { forEachColumnV1(columns, visit); }))
     throw std::runtime_error("/population columns differ in length");
   std::size_t next_name = 0, next_value = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    Individual i;
-    i.id = c.id[k];
-    i.generation = c.generation[k];
-    if (c.parent_a[k] != kNoId)
-      i.parents.push_back(c.parent_a[k]);
-    if (c.parent_b[k] != kNoId)
-      i.parents.push_back(c.parent_b[k]);
-    if (c.origin[k] > static_cast<std::uint8_t>(Origin::graft) ||
-        c.status[k] > static_cast<std::uint8_t>(EvalStatus::failed))
-      throw std::runtime_error("/population row " + std::to_string(k) +
-                               ": origin or status out of range");
-    i.origin = static_cast<Origin>(c.origin[k]);
-    i.evaluated = c.evaluated[k] != 0;
-    i.outcome.fitness = c.fitness[k];
-    i.outcome.status = static_cast<EvalStatus>(c.status[k]);
-    i.outcome.steps = c.steps[k];
-    i.outcome.wall_seconds = c.outcome_wall_seconds[k];
-    i.outcome.parts = c.parts[k];
-    i.outcome.joints = c.joints[k];
-    i.outcome.neurons = c.neurons[k];
-    i.eval_seconds = c.eval_seconds[k];
-    i.worker_rank = c.worker_rank[k];
-    // genome and message from their streams
-    if (c.genome_offset[k] > c.genome_bytes.size() ||
-        c.genome_size[k] > c.genome_bytes.size() - c.genome_offset[k] ||
-        c.message_offset[k] > c.message_bytes.size() ||
-        c.message_size[k] > c.message_bytes.size() - c.message_offset[k])
-      throw std::runtime_error("/population row " + std::to_string(k) +
-                               ": offset past the end of its byte stream");
-    i.genome = deserializeGenome(c.genome_bytes.data() + c.genome_offset[k], c.genome_size[k]);
-    i.outcome.message.assign(c.message_bytes.begin() + c.message_offset[k],
-                             c.message_bytes.begin() + c.message_offset[k] + c.message_size[k]);
-    // measures
+    Individual i = individualFrom(c, k);
+    Outcome& o = i.outcome;
+    if (c.status[k] > static_cast<std::uint8_t>(EvalStatus::failed))
+      throw std::runtime_error("/population row " + std::to_string(k) + ": status out of range");
+    o.fitness = c.fitness[k];
+    o.status = static_cast<EvalStatus>(c.status[k]);
+    o.steps = c.steps[k];
+    o.wall_seconds = c.outcome_wall_seconds[k];
+    o.parts = c.parts[k];
+    o.joints = c.joints[k];
+    o.neurons = c.neurons[k];
+    const std::uint8_t* message =
+        slice(c.message_bytes, c.message_offset[k], c.message_size[k], k, "message");
+    o.message.assign(message, message + c.message_size[k]);
     for (std::uint64_t m = 0; m < c.measure_count[k]; ++m) {
       Measure measure;
       while (next_name < c.measure_names.size() && c.measure_names[next_name] != 0)
@@ -193,7 +235,7 @@ Population fromColumns(const Columns& c, std::uint64_t generation) {
         throw std::runtime_error("/population row " + std::to_string(k) + ": measures truncated");
       ++next_name;
       measure.value = c.measure_values[next_value++];
-      i.outcome.measures.push_back(std::move(measure));
+      o.measures.push_back(std::move(measure));
     }
     population.individuals.push_back(std::move(i));
   }
@@ -248,7 +290,7 @@ void writeFile(const std::string& path, const CheckpointState& state,
   hid_t f = file.get();
   bool ok = writeFormat(f, kCheckpointFormatName, kCheckpointFormatVersion, kVersion, kGitHash) &&
             writeString(f, "config_text", state.config_text) &&
-            writeString(f, "config_hash", resultConfigHash(state.config_text)) &&
+            writeString(f, "config_hash", state.config_hash) &&
             writeScalar<std::uint64_t>(f, "seed", state.seed) &&
             writeScalar<std::uint64_t>(f, "generation", state.population.generation) &&
             writeScalar<std::uint64_t>(f, "next_generation", state.next_generation) &&
@@ -256,7 +298,9 @@ void writeFile(const std::string& path, const CheckpointState& state,
             writeScalar<std::uint64_t>(f, "digest", state.digest) &&
             writeScalar<std::int32_t>(f, "rank_count", state.rank_count) &&
             writeString(f, "written_time", utcTimestamp()) &&
-            writeScalar<std::uint64_t>(f, "state_hash", stateHash(state, columns));
+            writeScalar<std::uint64_t>(
+                f, "state_hash",
+                stateHash(state, columns, [](auto& c, auto visit) { forEachColumn(c, visit); }));
   if (!ok)
     fail("cannot write the root attributes");
 
@@ -366,25 +410,37 @@ CheckpointState readCheckpoint(const std::string& path) {
     fail("next_generation " + std::to_string(state.next_generation) +
          " does not follow generation " + std::to_string(generation) + " (corrupt checkpoint)");
 
-  // the population, checked against the state hash
+  readString(f, "config_hash", state.config_hash);
+
+  // the population, checked against the state hash (version 1: its own columns)
   Handle group(H5Gopen2(f, "population", H5P_DEFAULT), H5Gclose);
   if (!group.valid())
     fail("group /population missing (corrupt checkpoint)");
-  Columns columns;
-  std::string bad_column;
-  forEachColumn(columns, [&](const char* name, auto& values) {
-    if (bad_column.empty() && !readColumn(group.get(), name, values))
-      bad_column = name;
-  });
-  if (!bad_column.empty())
-    fail("dataset /population/" + bad_column + " missing or unreadable (corrupt checkpoint)");
-  try {
-    state.population = fromColumns(columns, generation);
-  } catch (const std::exception& e) {
-    fail(std::string(e.what()) + " (corrupt checkpoint)");
+  auto read = [&](auto& columns, auto forEach, auto decode) {
+    std::string bad_column;
+    forEach(columns, [&](const char* name, auto& values) {
+      if (bad_column.empty() && !readColumn(group.get(), name, values))
+        bad_column = name;
+    });
+    if (!bad_column.empty())
+      fail("dataset /population/" + bad_column + " missing or unreadable (corrupt checkpoint)");
+    try {
+      state.population = decode(columns, generation);
+    } catch (const std::exception& e) {
+      fail(std::string(e.what()) + " (corrupt checkpoint)");
+    }
+    if (stateHash(state, columns, forEach) != hash)
+      fail("state_hash does not match the contents (corrupt checkpoint)");
+  };
+  if (version == 1) {
+    ColumnsV1 columns;
+    read(
+        columns, [](auto& c, auto visit) { forEachColumnV1(c, visit); }, fromColumnsV1);
+  } else {
+    Columns columns;
+    read(
+        columns, [](auto& c, auto visit) { forEachColumn(c, visit); }, fromColumns);
   }
-  if (stateHash(state, columns) != hash)
-    fail("state_hash does not match the contents (corrupt checkpoint)");
   if (!state.population.allEvaluated() || state.population.individuals.empty())
     fail("the population of generation " + std::to_string(generation) +
          " is empty or not fully evaluated (corrupt checkpoint)");
@@ -427,7 +483,7 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir) {
   // no checkpoint at all: a history is only replaced when it holds no complete generation
   std::string history = dir + "/history.h5";
   if (exists(history)) {
-    std::vector<HistoryGeneration> generations;
+    std::vector<GenerationRecord> generations;
     try {
       generations = HistoryReader(history).generations();
     } catch (const Error& e) {
@@ -438,7 +494,7 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir) {
                       fresh);
     }
     bool recorded = false;
-    for (const HistoryGeneration& g : generations)
+    for (const GenerationRecord& g : generations)
       recorded = recorded || g.checkpoint_seconds > 0;
     if (recorded)
       throw Error(ExitCode::checkpoint, path + ": missing, but " + history +
@@ -461,95 +517,6 @@ void removeCheckpoints(const std::string& dir) {
     std::filesystem::remove(path, error);
     if (error)
       throw Error(ExitCode::output_file, path + ": cannot remove: " + error.message());
-  }
-}
-
-bool isRunOnlySetting(const std::string& key) {
-  static const std::set<std::string> run_only = {
-      "evolution.generations",
-      "run.out",
-      "run.quiet",
-      "run.verbose",
-      "run.max_hours",
-      "run.checkpoint_every",
-      "run.checkpoint_minutes",
-      "run.test_kill_at",
-      "run.test_worker_abort_at",
-      "run.dispatch_order",
-      "run.dispatch_seed",
-  };
-  return run_only.count(key) > 0;
-}
-
-std::map<std::string, std::string> settingsOfConfigText(const std::string& config_text) {
-  std::map<std::string, std::string> settings;
-  std::istringstream lines(config_text);
-  std::string line, section;
-  while (std::getline(lines, line)) {
-    // [section] headers, then key = value lines
-    if (!line.empty() && line.front() == '[' && line.back() == ']') {
-      section = line.substr(1, line.size() - 2);
-      continue;
-    }
-    std::size_t equals = line.find(" = ");
-    if (equals == std::string::npos)
-      continue;
-    settings[section + "." + line.substr(0, equals)] = line.substr(equals + 3);
-  }
-  return settings;
-}
-
-std::string resultConfigText(const std::string& config_text) {
-  // the lines of the text minus run-only keys (sections kept in order)
-  std::istringstream lines(config_text);
-  std::string line, section, text;
-  while (std::getline(lines, line)) {
-    if (!line.empty() && line.front() == '[' && line.back() == ']')
-      section = line.substr(1, line.size() - 2);
-    std::size_t equals = line.find(" = ");
-    if (equals != std::string::npos && isRunOnlySetting(section + "." + line.substr(0, equals)))
-      continue;
-    text += line + "\n";
-  }
-  return text;
-}
-
-std::string resultConfigHash(const std::string& config_text) {
-  return configHash(resultConfigText(config_text));
-}
-
-void checkResumeSettings(const std::string& path, const std::string& saved_config_text,
-                         const std::string& current_config_text,
-                         const std::string& default_config_text) {
-  std::map<std::string, std::string> saved = settingsOfConfigText(saved_config_text);
-  std::map<std::string, std::string> current = settingsOfConfigText(current_config_text);
-  std::map<std::string, std::string> defaults = settingsOfConfigText(default_config_text);
-
-  // every key of either side, in order
-  std::set<std::string> keys;
-  for (const auto& [key, value] : saved)
-    keys.insert(key);
-  for (const auto& [key, value] : current)
-    keys.insert(key);
-  for (const std::string& key : keys) {
-    if (isRunOnlySetting(key))
-      continue;
-    auto old_value = saved.find(key);
-    auto new_value = current.find(key);
-    // a key added since the checkpoint, left at its default: the old behaviour
-    auto default_value = defaults.find(key);
-    if (old_value == saved.end() && new_value != current.end() && default_value != defaults.end() &&
-        default_value->second == new_value->second)
-      continue;
-    std::string before = old_value == saved.end() ? "(absent)" : "'" + old_value->second + "'";
-    std::string after = new_value == current.end() ? "(absent)" : "'" + new_value->second + "'";
-    if (before != after) {
-      throw Error(ExitCode::checkpoint,
-                  path + ": setting " + key + " was " + before +
-                      " when the checkpoint was written and is " + after +
-                      " now; it changes results, so the run cannot continue with it (restore the "
-                      "old value, or start over with --fresh)");
-    }
   }
 }
 

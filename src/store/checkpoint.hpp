@@ -9,14 +9,14 @@
 
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <optional>
 #include <string>
 
 namespace cambrian {
 
-/// Version of the checkpoint layout; a reader refuses files with a newer one.
-constexpr int kCheckpointFormatVersion = 1;
+/// Version of the checkpoint layout; a reader refuses files with a newer one. Version 2 stores
+/// each outcome in its one byte form (version 1, one column per outcome field, is still read).
+constexpr int kCheckpointFormatVersion = 2;
 
 /// Value of the root attribute "format" that marks a cambrian checkpoint file.
 constexpr const char* kCheckpointFormatName = "cambrian-checkpoint";
@@ -24,6 +24,7 @@ constexpr const char* kCheckpointFormatName = "cambrian-checkpoint";
 /// The state a run continues from.
 struct CheckpointState {
   std::string config_text;            ///< the full effective settings as INI text
+  std::string config_hash;            ///< hash of the settings that change results
   std::uint64_t seed = 0;             ///< run seed
   std::uint64_t next_generation = 0;  ///< generation the run continues with (population's + 1)
   std::uint64_t next_id = 0;          ///< id the next new individual gets (Breeder::nextId)
@@ -67,29 +68,5 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir);
 /// Removes DIR/checkpoint.h5, checkpoint.prev.h5 and checkpoint.h5.tmp (a fresh start).
 /// Throws Error(output_file) naming a file that cannot be removed.
 void removeCheckpoints(const std::string& dir);
-
-/// True for settings that may change between a checkpoint and its resume because they do not
-/// affect results: evolution.generations, run.out, run.quiet, run.verbose, run.max_hours,
-/// run.checkpoint_every, run.checkpoint_minutes, run.dispatch_order, run.dispatch_seed,
-/// run.test_kill_at, run.test_worker_abort_at. Every other key counts.
-bool isRunOnlySetting(const std::string& key);
-
-/// "section.key" -> value of every `key = value` line of INI text under its `[section]`.
-std::map<std::string, std::string> settingsOfConfigText(const std::string& config_text);
-
-/// `config_text` without the run-only settings (what the config hash covers).
-std::string resultConfigText(const std::string& config_text);
-
-/// configHash(resultConfigText(config_text)): equal for runs that must give equal results.
-std::string resultConfigHash(const std::string& config_text);
-
-/// Compares the settings of a checkpoint with the current ones, key by key. Throws
-/// Error(checkpoint) naming `path`, the first differing key that affects results, its old and its
-/// new value, when one differs. A key the checkpoint lacks is no change when its current value is
-/// its default in `default_config_text` (a setting added after the checkpoint was written, whose
-/// default is how the older cambrian behaved).
-void checkResumeSettings(const std::string& path, const std::string& saved_config_text,
-                         const std::string& current_config_text,
-                         const std::string& default_config_text = "");
 
 }  // namespace cambrian

@@ -114,7 +114,9 @@ bool writeStrings(hid_t location, const char* name, const std::vector<std::strin
   std::vector<const char*> texts;
   for (const std::string& value : values)
     texts.push_back(value.c_str());
-  return attribute.valid() && H5Awrite(attribute.get(), type.get(), texts.data()) >= 0;
+  // an empty list is an attribute of no elements: nothing to write into it
+  return attribute.valid() &&
+         (texts.empty() || H5Awrite(attribute.get(), type.get(), texts.data()) >= 0);
 }
 
 bool describe(hid_t location, const char* units, const char* description) {
@@ -157,6 +159,31 @@ bool readString(hid_t location, const char* name, std::string& value) {
   if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0)
     return false;
   value = buffer.substr(0, buffer.find('\0'));
+  return true;
+}
+
+bool readStrings(hid_t location, const char* name, std::vector<std::string>& values) {
+  // a 1-D attribute of variable-length strings
+  if (H5Aexists(location, name) <= 0)
+    return false;
+  Handle attribute(H5Aopen(location, name, H5P_DEFAULT), H5Aclose);
+  Handle type(H5Aget_type(attribute.get()), H5Tclose);
+  Handle space(H5Aget_space(attribute.get()), H5Sclose);
+  if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING ||
+      H5Tis_variable_str(type.get()) <= 0)
+    return false;
+  hssize_t count = H5Sget_simple_extent_npoints(space.get());
+  if (count < 0)
+    return false;
+  std::vector<char*> texts(static_cast<std::size_t>(count), nullptr);
+  Handle memory = stringType();
+  if (count > 0 && H5Aread(attribute.get(), memory.get(), texts.data()) < 0)
+    return false;
+  values.clear();
+  for (char* text : texts) {
+    values.emplace_back(text ? text : "");
+    H5free_memory(text);
+  }
   return true;
 }
 

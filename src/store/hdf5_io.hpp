@@ -113,6 +113,9 @@ bool writeFormat(hid_t file, const char* format, std::int32_t version,
 /// another kind.
 bool readString(hid_t location, const char* name, std::string& value);
 
+/// Reads a 1-D variable-length string attribute; false when missing or of another kind.
+bool readStrings(hid_t location, const char* name, std::vector<std::string>& values);
+
 /// Reads a scalar attribute into T (integer attributes for integer T, floating-point ones for
 /// floating-point T); false when missing or of another kind.
 template <class T>

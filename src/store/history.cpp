@@ -1,8 +1,10 @@
 #include "store/history.hpp"
 
+#include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
 #include "cambrian/version.hpp"
 
+#include "core/hash.hpp"
 #include "store/hdf5_io.hpp"
 
 #include <hdf5.h>
@@ -57,8 +59,8 @@ const std::vector<Column>& individualColumns() {
       {"fitness", nativeType<double>, 1, "task", "fitness (task units; failures get 0)"},
       {"status", nativeType<std::uint8_t>, 1, "1",
        "how the evaluation ended; index into the names attribute"},
-      {"measures", nativeType<double>, kHistoryMeasureCount, "see units attribute",
-       "jury measures, one column per name in the names attribute; NaN when absent"},
+      {"measures", nativeType<double>, 0, "see units attribute",
+       "the task's measures, one column per name in the names attribute; NaN when absent"},
       {"parts", nativeType<std::int32_t>, 1, "1", "body parts of the developed creature"},
       {"joints", nativeType<std::int32_t>, 1, "1", "joints of the developed creature"},
       {"neurons", nativeType<std::int32_t>, 1, "1", "neurons of the developed creature"},
@@ -126,8 +128,8 @@ std::vector<std::string> statusNames() {
 // an empty extendible chunked dataset of `width` columns (1: a 1-D dataset), shuffled and
 // deflated at `deflate_level` (0: stored as is)
 Handle createTable(hid_t group, const char* name, hid_t type, hsize_t width, hsize_t chunk,
-                   int deflate_level) {
-  int rank = width == 1 ? 1 : 2;
+                   int deflate_level, bool two_dimensional = false) {
+  int rank = width == 1 && !two_dimensional ? 1 : 2;
   hsize_t dims[2] = {0, width};
   hsize_t max_dims[2] = {H5S_UNLIMITED, width};
   hsize_t chunk_dims[2] = {chunk, width};
@@ -182,33 +184,44 @@ std::vector<T> gather(const std::vector<Row>& rows, Get get) {
   return values;
 }
 
-// a whole dataset as T values (rows * width); false when missing or unreadable
+// a whole dataset as T values (rows * width); false when missing or unreadable; width 0: any
+// width, read into `width`
 template <class T>
-bool readTable(hid_t group, const char* name, hsize_t width, std::vector<T>& values,
+bool readTable(hid_t group, const char* name, hsize_t& width, std::vector<T>& values,
                hsize_t& rows) {
   std::vector<hsize_t> dims;
   Handle dataset = openDataset(group, name, 2, dims);
-  if (!dataset.valid() || (dims.size() == 1 && width != 1) ||
-      (dims.size() == 2 && dims[1] != width))
+  if (!dataset.valid())
     return false;
+  hsize_t found = dims.size() == 1 ? 1 : dims[1];
+  if (width != 0 && found != width)
+    return false;
+  width = found;
   rows = dims[0];
   return readValues(dataset.get(), rows * width, values);
 }
 
-// calls visit(name, field) for every field of a generation row, in column order
+// the same for a one-column dataset
+template <class T>
+bool readColumn(hid_t group, const char* name, std::vector<T>& values, hsize_t& rows) {
+  hsize_t width = 1;
+  return readTable(group, name, width, values, rows);
+}
+
+// calls visit(name, field) for every field of a generation record, in column order
 template <class G, class Visit>
 void forEachGenerationField(G& g, Visit visit) {
   visit("generation", g.generation);
-  visit("count", g.count);
-  visit("failed", g.failed);
-  visit("best", g.best);
-  visit("mean", g.mean);
-  visit("stddev", g.stddev);
-  visit("worst", g.worst);
-  visit("q25", g.q25);
-  visit("median", g.median);
-  visit("q75", g.q75);
-  visit("best_id", g.best_id);
+  visit("count", g.stats.count);
+  visit("failed", g.stats.failed);
+  visit("best", g.stats.best);
+  visit("mean", g.stats.mean);
+  visit("stddev", g.stats.stddev);
+  visit("worst", g.stats.worst);
+  visit("q25", g.stats.q25);
+  visit("median", g.stats.median);
+  visit("q75", g.stats.q75);
+  visit("best_id", g.stats.best_id);
   visit("evaluations", g.evaluations);
   visit("workers", g.workers);
   visit("distinct_genomes", g.distinct_genomes);
@@ -223,42 +236,16 @@ void forEachGenerationField(G& g, Visit visit) {
   visit("unix_time", g.unix_time);
 }
 
-// FNV-1a 64 over bytes
-std::uint64_t fnv1a(const std::uint8_t* data, std::size_t size) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= data[i];
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
-
 double unixNow() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
+// the parent ids of a row: kNoId where absent
+std::uint64_t parentAt(const Individual& individual, std::size_t k) {
+  return individual.parents.size() > k ? individual.parents[k] : kNoId;
+}
+
 }  // namespace
-
-const std::array<HistoryMeasure, kHistoryMeasureCount>& historyMeasures() {
-  static const std::array<HistoryMeasure, kHistoryMeasureCount> measures = {{
-      {"distance", "m"},
-      {"body_length", "m"},
-      {"body_lengths", "1"},
-      {"height", "m"},
-      {"cost_us", "us"},
-      {"nodes", "1"},
-  }};
-  return measures;
-}
-
-std::string configHash(const std::string& config_text) {
-  char text[17];
-  std::snprintf(
-      text, sizeof text, "%016llx",
-      static_cast<unsigned long long>(
-          fnv1a(reinterpret_cast<const std::uint8_t*>(config_text.data()), config_text.size())));
-  return text;
-}
 
 std::string utcTimestamp() {
   std::time_t now = std::time(nullptr);
@@ -269,71 +256,6 @@ std::string utcTimestamp() {
   return text;
 }
 
-HistoryIndividual makeHistoryIndividual(const Individual& individual) {
-  HistoryIndividual row;
-  row.generation = individual.generation;
-  row.id = individual.id;
-  if (!individual.parents.empty())
-    row.parent_a = individual.parents[0];
-  if (individual.parents.size() > 1)
-    row.parent_b = individual.parents[1];
-  row.origin = individual.origin;
-  row.fitness = individual.fitness();
-  const Outcome& outcome = individual.outcome;
-  row.status = outcome.status;
-  // measures by name into the fixed columns
-  for (std::size_t i = 0; i < kHistoryMeasureCount; ++i)
-    row.measures[i] = outcome.measure(historyMeasures()[i].name);
-  row.parts = outcome.parts;
-  row.joints = outcome.joints;
-  row.neurons = outcome.neurons;
-  row.steps = outcome.steps;
-  row.eval_seconds = individual.eval_seconds;
-  row.worker_rank = individual.worker_rank;
-  row.genome = individual.genomeBytes();
-  return row;
-}
-
-std::uint64_t distinctGenomes(const Population& population) {
-  // the byte strings sorted in place (no copies), then the runs of equal ones counted
-  std::vector<const std::vector<std::uint8_t>*> genomes;
-  for (const Individual& individual : population.individuals)
-    genomes.push_back(&individual.genomeBytes());
-  auto less = [](auto* a, auto* b) { return *a < *b; };
-  auto equal = [](auto* a, auto* b) { return *a == *b; };
-  std::sort(genomes.begin(), genomes.end(), less);
-  return static_cast<std::uint64_t>(std::unique(genomes.begin(), genomes.end(), equal) -
-                                    genomes.begin());
-}
-
-HistoryGeneration makeHistoryGeneration(const GenerationRecord& record,
-                                        const Population& population) {
-  HistoryGeneration row;
-  const FitnessStats& s = record.stats;
-  row.generation = record.generation;
-  row.count = s.count;
-  row.failed = s.failed;
-  row.best = s.best;
-  row.mean = s.mean;
-  row.stddev = s.stddev;
-  row.worst = s.worst;
-  row.q25 = s.q25;
-  row.median = s.median;
-  row.q75 = s.q75;
-  row.best_id = s.best_id;
-  row.evaluations = record.evaluations;
-  row.workers = record.workers;
-  row.distinct_genomes = distinctGenomes(population);
-  row.rank0_serial_seconds = record.rank0_serial_seconds;
-  row.rank0_cpu_seconds = record.rank0_cpu_seconds;
-  row.rank0_dispatch_seconds = record.rank0_dispatch_seconds;
-  row.evaluation_span_seconds = record.evaluation_span_seconds;
-  row.worker_busy_seconds = record.worker_busy_seconds;
-  row.worker_idle_seconds = record.worker_idle_seconds;
-  row.wall_seconds = record.wall_seconds;
-  return row;
-}
-
 // ---------------------------------------------------------------------------------------------
 // writer
 
@@ -342,9 +264,10 @@ struct HistoryWriter::Impl {
   std::unordered_map<std::string, Handle> individuals;  // column name -> dataset
   std::unordered_map<std::string, Handle> generations;
   Handle genome_bytes;
-  std::uint64_t genome_end = 0;           // bytes in genome_bytes so far
-  std::vector<std::uint8_t> byte_buffer;  // a generation's genomes, concatenated (kept: no
-                                          // fresh megabyte to fault in every generation)
+  std::vector<std::string> measure_names;  // the measure columns, in order
+  std::uint64_t genome_end = 0;            // bytes in genome_bytes so far
+  std::vector<std::uint8_t> byte_buffer;   // a generation's genomes, concatenated (kept: no
+                                           // fresh megabyte to fault in every generation)
 
   // the datasets, then the file: afterwards the file on disk is closed and consistent
   bool closeFile() {
@@ -390,6 +313,7 @@ std::uint64_t historyChunkRows(std::uint64_t population) {
 }
 
 HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attributes,
+                             const std::vector<MeasureInfo>& measures,
                              std::uint64_t individual_rows_per_chunk)
     : path_(path), impl_(std::make_unique<Impl>()) {
   QuietErrors quiet;
@@ -397,6 +321,10 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
     impl_.reset();
     throw Error(ExitCode::output_file, path_ + ": " + what);
   };
+  if (measures.empty())
+    throw Error(ExitCode::failure, path_ + ": a history needs at least one measure column");
+  for (const MeasureInfo& measure : measures)
+    impl_->measure_names.push_back(measure.name);
 
   // the file, newest format (SWMR needs it)
   impl_->file = createFile(path_, H5F_LIBVER_LATEST);
@@ -406,7 +334,7 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
 
   // provenance on the root group
   if (attributes.config_hash.empty())
-    attributes.config_hash = configHash(attributes.config_text);
+    attributes.config_hash = hashText(attributes.config_text);
   if (attributes.start_time.empty())
     attributes.start_time = utcTimestamp();
   if (attributes.cambrian_version.empty())
@@ -417,6 +345,7 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
                         attributes.cambrian_version, attributes.git_hash) &&
             writeString(file, "config_text", attributes.config_text) &&
             writeString(file, "config_hash", attributes.config_hash) &&
+            writeStrings(file, "run_only_settings", attributes.run_only_settings) &&
             writeScalar<std::uint64_t>(file, "seed", attributes.seed) &&
             writeString(file, "bullet_precision", attributes.bullet_precision) &&
             writeString(file, "start_time", attributes.start_time) &&
@@ -425,6 +354,7 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
     fail("cannot write the root attributes");
 
   // one group per table, one dataset per column, with units and descriptions
+  const hsize_t measure_count = measures.size();
   auto makeGroup = [&](const char* name, const std::vector<Column>& columns,
                        std::unordered_map<std::string, Handle>& datasets, hsize_t chunk,
                        const char* about) {
@@ -432,8 +362,10 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
     if (!group.valid() || !writeString(group.get(), "description", about))
       fail(std::string("cannot create group /") + name);
     for (const Column& column : columns) {
+      bool matrix = column.width == 0;
       Handle dataset =
-          createTable(group.get(), column.name, column.type(), column.width, chunk, kDeflateLevel);
+          createTable(group.get(), column.name, column.type(),
+                      matrix ? measure_count : column.width, chunk, kDeflateLevel, matrix);
       if (!dataset.valid() || !describe(dataset.get(), column.units, column.description))
         fail(std::string("cannot create dataset /") + name + "/" + column.name);
       datasets.emplace(column.name, std::move(dataset));
@@ -447,17 +379,15 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
                                  kGenerationChunk, "one row per generation");
 
   // enum names and measure names / units
-  std::vector<std::string> measure_names, measure_units;
-  for (const HistoryMeasure& measure : historyMeasures()) {
-    measure_names.push_back(measure.name);
+  std::vector<std::string> measure_units;
+  for (const MeasureInfo& measure : measures)
     measure_units.push_back(measure.unit);
-  }
-  hid_t measures = impl_->individuals.at("measures").get();
-  H5Adelete(measures, "units");
+  hid_t measure_set = impl_->individuals.at("measures").get();
+  H5Adelete(measure_set, "units");
   if (!writeStrings(impl_->individuals.at("operator").get(), "names", originNames()) ||
       !writeStrings(impl_->individuals.at("status").get(), "names", statusNames()) ||
-      !writeStrings(measures, "names", measure_names) ||
-      !writeStrings(measures, "units", measure_units))
+      !writeStrings(measure_set, "names", impl_->measure_names) ||
+      !writeStrings(measure_set, "units", measure_units))
     fail("cannot write the names attributes of /individuals");
 
   // the genome byte stream
@@ -465,8 +395,8 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
                                     kByteChunk, kGenomeDeflateLevel);
   if (!impl_->genome_bytes.valid() ||
       !describe(impl_->genome_bytes.get(), "byte",
-                "serialized genomes (serializeGenome), concatenated; row i is "
-                "genome_bytes[genome_offset[i] : genome_offset[i] + genome_size[i]]"))
+                "genomes in their byte form (encoding tag, version, fields), concatenated; row i "
+                "is genome_bytes[genome_offset[i] : genome_offset[i] + genome_size[i]]"))
     fail("cannot create dataset /individuals/genome_bytes");
 
   // closed until the first append: between appends any HDF5 tool can open the file
@@ -482,39 +412,56 @@ HistoryWriter::~HistoryWriter() {
   }
 }
 
-void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
-                                     HistoryGeneration generation) {
+void HistoryWriter::appendGeneration(const std::vector<Individual>& rows,
+                                     GenerationRecord generation) {
   if (!impl_)
     throw Error(ExitCode::output_file, path_ + ": history file is closed");
-  QuietErrors quiet;
   Impl& m = *impl_;
+
+  // the measures by name into their columns (NaN where absent), before anything is written
+  const std::size_t width = m.measure_names.size();
+  std::vector<double> measures(rows.size() * width, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    for (const Measure& measure : rows[r].outcome.measures) {
+      auto column = std::find(m.measure_names.begin(), m.measure_names.end(), measure.name);
+      if (column == m.measure_names.end())
+        throw Error(ExitCode::failure, path_ + ": individual " + std::to_string(rows[r].id) +
+                                           " has the measure '" + measure.name +
+                                           "', which the run's task does not declare");
+      measures[r * width + static_cast<std::size_t>(column - m.measure_names.begin())] =
+          measure.value;
+    }
+  }
+
+  QuietErrors quiet;
   if (!m.openFile(path_))
     throw Error(ExitCode::output_file, path_ + ": cannot open the history file to append to it");
   bool ok = true;
   auto append = [&](std::unordered_map<std::string, Handle>& datasets, const char* name,
-                    const auto& values, hsize_t width) {
+                    const auto& values, hsize_t columns) {
     using T = typename std::decay_t<decltype(values)>::value_type;
     if (ok)
       ok = appendRows(datasets.at(name).get(), nativeType<T>(), values.data(),
-                      values.size() / width, width);
+                      values.size() / columns, columns);
   };
   using u64 = std::uint64_t;
   using i32 = std::int32_t;
   using u8 = std::uint8_t;
-  using R = HistoryIndividual;
+  using R = Individual;
 
   // genome bytes first: rows never point past the stream
   std::vector<u8>& bytes = m.byte_buffer;
   std::size_t total = 0;
   for (const R& row : rows)
-    total += row.genome.size();
+    total += row.genomeBytes().size();
   bytes.clear();
   bytes.reserve(total);
   std::vector<u64> offsets, sizes;
   for (const R& row : rows) {
+    const std::vector<u8>& genome = row.genomeBytes();
     offsets.push_back(m.genome_end + bytes.size());
-    sizes.push_back(row.genome.size());
-    bytes.insert(bytes.end(), row.genome.begin(), row.genome.end());
+    sizes.push_back(genome.size());
+    bytes.insert(bytes.end(), genome.begin(), genome.end());
   }
   ok = appendRows(m.genome_bytes.get(), H5T_NATIVE_UINT8, bytes.data(), bytes.size(), 1);
   if (ok)
@@ -524,19 +471,16 @@ void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
   auto& d = m.individuals;
   append(d, "generation", gather<u64>(rows, [](const R& r) { return r.generation; }), 1);
   append(d, "id", gather<u64>(rows, [](const R& r) { return r.id; }), 1);
-  append(d, "parent_a", gather<u64>(rows, [](const R& r) { return r.parent_a; }), 1);
-  append(d, "parent_b", gather<u64>(rows, [](const R& r) { return r.parent_b; }), 1);
+  append(d, "parent_a", gather<u64>(rows, [](const R& r) { return parentAt(r, 0); }), 1);
+  append(d, "parent_b", gather<u64>(rows, [](const R& r) { return parentAt(r, 1); }), 1);
   append(d, "operator", gather<u8>(rows, [](const R& r) { return r.origin; }), 1);
-  append(d, "fitness", gather<double>(rows, [](const R& r) { return r.fitness; }), 1);
-  append(d, "status", gather<u8>(rows, [](const R& r) { return r.status; }), 1);
-  std::vector<double> measures;
-  for (const R& row : rows)
-    measures.insert(measures.end(), row.measures.begin(), row.measures.end());
-  append(d, "measures", measures, kHistoryMeasureCount);
-  append(d, "parts", gather<i32>(rows, [](const R& r) { return r.parts; }), 1);
-  append(d, "joints", gather<i32>(rows, [](const R& r) { return r.joints; }), 1);
-  append(d, "neurons", gather<i32>(rows, [](const R& r) { return r.neurons; }), 1);
-  append(d, "steps", gather<u64>(rows, [](const R& r) { return r.steps; }), 1);
+  append(d, "fitness", gather<double>(rows, [](const R& r) { return r.fitness(); }), 1);
+  append(d, "status", gather<u8>(rows, [](const R& r) { return r.outcome.status; }), 1);
+  append(d, "measures", measures, width);
+  append(d, "parts", gather<i32>(rows, [](const R& r) { return r.outcome.parts; }), 1);
+  append(d, "joints", gather<i32>(rows, [](const R& r) { return r.outcome.joints; }), 1);
+  append(d, "neurons", gather<i32>(rows, [](const R& r) { return r.outcome.neurons; }), 1);
+  append(d, "steps", gather<u64>(rows, [](const R& r) { return r.outcome.steps; }), 1);
   append(d, "eval_seconds", gather<double>(rows, [](const R& r) { return r.eval_seconds; }), 1);
   append(d, "worker_rank", gather<i32>(rows, [](const R& r) { return r.worker_rank; }), 1);
   append(d, "genome_offset", offsets, 1);
@@ -545,7 +489,7 @@ void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
   // the generation row
   if (generation.unix_time == 0)
     generation.unix_time = unixNow();
-  const HistoryGeneration& g = generation;
+  const GenerationRecord& g = generation;
   auto& e = m.generations;
   forEachGenerationField(g, [&](const char* name, auto value) {
     append(e, name, std::vector<decltype(value)>{value}, 1);
@@ -558,7 +502,7 @@ void HistoryWriter::appendGeneration(const std::vector<HistoryIndividual>& rows,
   }
 }
 
-void HistoryWriter::completeLastGeneration(const GenerationTimes& times) {
+void HistoryWriter::completeLastGeneration(const GenerationRecord& record) {
   if (!impl_)
     throw Error(ExitCode::output_file, path_ + ": history file is closed");
   QuietErrors quiet;
@@ -575,10 +519,10 @@ void HistoryWriter::completeLastGeneration(const GenerationTimes& times) {
   }
   hsize_t offset = rows - 1;
   const std::pair<const char*, double> cells[] = {
-      {"rank0_serial_seconds", times.rank0_serial_seconds},
-      {"rank0_cpu_seconds", times.rank0_cpu_seconds},
-      {"checkpoint_seconds", times.checkpoint_seconds},
-      {"wall_seconds", times.wall_seconds}};
+      {"rank0_serial_seconds", record.rank0_serial_seconds},
+      {"rank0_cpu_seconds", record.rank0_cpu_seconds},
+      {"checkpoint_seconds", record.checkpoint_seconds},
+      {"wall_seconds", record.wall_seconds}};
   for (const auto& [column, value] : cells) {
     if (!writeRows(impl_->generations.at(column).get(), H5T_NATIVE_DOUBLE, &value, offset, 1, 1))
       throw Error(ExitCode::output_file,
@@ -600,12 +544,14 @@ void HistoryWriter::renameTo(const std::string& path) {
 }
 
 std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint64_t generations,
-                                             HistoryAttributes attributes, HistoryRows& kept,
+                                             HistoryAttributes attributes,
+                                             const std::vector<MeasureInfo>& measures,
+                                             HistoryRows& kept,
                                              std::uint64_t individual_rows_per_chunk) {
   // the old rows (a crashed writer's file opens for SWMR reading)
   kept = HistoryRows{};
-  std::vector<HistoryIndividual> individuals;
-  std::vector<HistoryGeneration> rows;
+  std::vector<Individual> individuals;
+  std::vector<GenerationRecord> rows;
   {
     HistoryReader reader(path);
     individuals = reader.individuals();
@@ -624,17 +570,17 @@ std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint6
   }
 
   // a new file with the kept rows, generation by generation, renamed over the old one
-  auto writer =
-      std::make_unique<HistoryWriter>(path + ".resume.tmp", attributes, individual_rows_per_chunk);
+  auto writer = std::make_unique<HistoryWriter>(path + ".resume.tmp", attributes, measures,
+                                                individual_rows_per_chunk);
   std::size_t next = 0;
   for (std::uint64_t g = 0; g < generations; ++g) {
-    std::vector<HistoryIndividual> group;
+    std::vector<Individual> group;
     while (next < individuals.size() && individuals[next].generation == g)
       group.push_back(std::move(individuals[next++]));
-    if (group.size() != rows[g].count)
+    if (group.size() != rows[g].stats.count)
       throw InputError(path + ": generation " + std::to_string(g) + " has " +
                        std::to_string(group.size()) + " individual rows, its row says " +
-                       std::to_string(rows[g].count) + " (corrupt history)");
+                       std::to_string(rows[g].stats.count) + " (corrupt history)");
     writer->appendGeneration(group, rows[g]);
     kept.individuals.insert(kept.individuals.end(), group.begin(), group.end());
     kept.generations.push_back(rows[g]);
@@ -688,6 +634,8 @@ HistoryReader::HistoryReader(const std::string& path)
   if (!ok)
     fail("a root attribute is missing or of the wrong type (corrupt history)");
   a.rank_count = ranks;
+  // older files do not list their run-only settings
+  readStrings(file, "run_only_settings", a.run_only_settings);
   for (const char* group : {"individuals", "generations"}) {
     if (H5Lexists(file, group, H5P_DEFAULT) <= 0)
       fail(std::string("group /") + group + " missing (corrupt history)");
@@ -696,7 +644,21 @@ HistoryReader::HistoryReader(const std::string& path)
 
 HistoryReader::~HistoryReader() = default;
 
-std::vector<HistoryIndividual> HistoryReader::individuals() const {
+std::vector<MeasureInfo> HistoryReader::measures() const {
+  QuietErrors quiet;
+  Handle dataset(H5Dopen2(impl_->file.get(), "/individuals/measures", H5P_DEFAULT), H5Dclose);
+  std::vector<std::string> names, units;
+  if (!dataset.valid() || !readStrings(dataset.get(), "names", names))
+    throw InputError(path_ + ": /individuals/measures or its names attribute is missing");
+  readStrings(dataset.get(), "units", units);
+  std::vector<MeasureInfo> measures;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    measures.push_back({names[i], i < units.size() ? units[i] : ""});
+  return measures;
+}
+
+std::vector<Individual> HistoryReader::individuals() const {
+  std::vector<MeasureInfo> measure_columns = measures();
   QuietErrors quiet;
   Handle group(H5Gopen2(impl_->file.get(), "individuals", H5P_DEFAULT), H5Gclose);
   if (!group.valid())
@@ -708,9 +670,9 @@ std::vector<HistoryIndividual> HistoryReader::individuals() const {
   std::vector<double> fitness, measures, eval_seconds;
   std::vector<std::int32_t> parts, joints, neurons, worker_rank;
   hsize_t rows = std::numeric_limits<hsize_t>::max();
-  auto column = [&](const char* name, auto& values, hsize_t width = 1) {
+  auto column = [&](const char* name, auto& values) {
     hsize_t n = 0;
-    if (!readTable(group.get(), name, width, values, n))
+    if (!readColumn(group.get(), name, values, n))
       throw InputError(path_ + ": dataset /individuals/" + name + " missing or unreadable");
     rows = std::min(rows, n);
   };
@@ -721,7 +683,12 @@ std::vector<HistoryIndividual> HistoryReader::individuals() const {
   column("operator", origin);
   column("fitness", fitness);
   column("status", status);
-  column("measures", measures, kHistoryMeasureCount);
+  hsize_t width = measure_columns.size(), measure_rows = 0;
+  if (!readTable(group.get(), "measures", width, measures, measure_rows))
+    throw InputError(path_ +
+                     ": dataset /individuals/measures missing, unreadable or not one "
+                     "column per name in its names attribute");
+  rows = std::min(rows, measure_rows);
   column("parts", parts);
   column("joints", joints);
   column("neurons", neurons);
@@ -731,11 +698,11 @@ std::vector<HistoryIndividual> HistoryReader::individuals() const {
   column("genome_offset", offset);
   column("genome_size", size);
   hsize_t byte_count = 0;
-  if (!readTable(group.get(), "genome_bytes", 1, bytes, byte_count))
+  if (!readColumn(group.get(), "genome_bytes", bytes, byte_count))
     throw InputError(path_ + ": dataset /individuals/genome_bytes missing or unreadable");
 
   // rows, checked against the byte stream and the enums
-  std::vector<HistoryIndividual> result;
+  std::vector<Individual> result;
   result.reserve(rows);
   for (hsize_t i = 0; i < rows; ++i) {
     if (offset[i] > byte_count || size[i] > byte_count - offset[i])
@@ -744,29 +711,41 @@ std::vector<HistoryIndividual> HistoryReader::individuals() const {
         status[i] > static_cast<std::uint8_t>(EvalStatus::failed))
       throw InputError(path_ + ": /individuals row " + std::to_string(i) +
                        ": operator or status out of range (corrupt history)");
-    HistoryIndividual row;
+    Individual row;
     row.generation = generation[i];
     row.id = id[i];
-    row.parent_a = parent_a[i];
-    row.parent_b = parent_b[i];
+    for (std::uint64_t parent : {parent_a[i], parent_b[i]}) {
+      if (parent != kNoId)
+        row.parents.push_back(parent);
+    }
     row.origin = static_cast<Origin>(origin[i]);
-    row.fitness = fitness[i];
-    row.status = static_cast<EvalStatus>(status[i]);
-    std::copy_n(measures.begin() + i * kHistoryMeasureCount, kHistoryMeasureCount,
-                row.measures.begin());
-    row.parts = parts[i];
-    row.joints = joints[i];
-    row.neurons = neurons[i];
-    row.steps = steps[i];
+    Outcome& outcome = row.outcome;
+    outcome.fitness = fitness[i];
+    outcome.status = static_cast<EvalStatus>(status[i]);
+    for (std::size_t k = 0; k < measure_columns.size(); ++k) {
+      double value = measures[i * width + k];
+      if (!std::isnan(value))
+        outcome.measures.push_back({measure_columns[k].name, value});
+    }
+    outcome.parts = parts[i];
+    outcome.joints = joints[i];
+    outcome.neurons = neurons[i];
+    outcome.steps = steps[i];
+    row.evaluated = true;
     row.eval_seconds = eval_seconds[i];
     row.worker_rank = worker_rank[i];
-    row.genome.assign(bytes.begin() + offset[i], bytes.begin() + offset[i] + size[i]);
+    try {
+      row.genome = decodeGenome(bytes.data() + offset[i], size[i]);
+    } catch (const Error& e) {
+      throw InputError(path_ + ": genome of individual " + std::to_string(row.id) + ": " +
+                       e.what());
+    }
     result.push_back(std::move(row));
   }
   return result;
 }
 
-std::vector<HistoryGeneration> HistoryReader::generations() const {
+std::vector<GenerationRecord> HistoryReader::generations() const {
   QuietErrors quiet;
   Handle group(H5Gopen2(impl_->file.get(), "generations", H5P_DEFAULT), H5Gclose);
   if (!group.valid())
@@ -784,8 +763,8 @@ std::vector<HistoryGeneration> HistoryReader::generations() const {
       absent.push_back(&c);
       continue;
     }
-    bool ok = real ? readTable(group.get(), c.name, 1, reals[c.name], n)
-                   : readTable(group.get(), c.name, 1, integers[c.name], n);
+    bool ok = real ? readColumn(group.get(), c.name, reals[c.name], n)
+                   : readColumn(group.get(), c.name, integers[c.name], n);
     if (!ok)
       throw InputError(path_ + ": dataset /generations/" + c.name + " missing or unreadable");
     rows = std::min(rows, n);
@@ -797,9 +776,9 @@ std::vector<HistoryGeneration> HistoryReader::generations() const {
     else
       integers[c->name].assign(rows, 0);
   }
-  std::vector<HistoryGeneration> result(rows);
+  std::vector<GenerationRecord> result(rows);
   for (hsize_t i = 0; i < rows; ++i) {
-    HistoryGeneration& g = result[i];
+    GenerationRecord& g = result[i];
     forEachGenerationField(g, [&](const char* name, auto& field) {
       using T = std::decay_t<decltype(field)>;
       if constexpr (std::is_floating_point_v<T>)
@@ -809,23 +788,6 @@ std::vector<HistoryGeneration> HistoryReader::generations() const {
     });
   }
   return result;
-}
-
-std::vector<std::uint8_t> HistoryReader::genomeBytes(std::uint64_t id) const {
-  for (HistoryIndividual& row : individuals()) {
-    if (row.id == id)
-      return std::move(row.genome);
-  }
-  throw InputError(path_ + ": no individual with id " + std::to_string(id));
-}
-
-Genome HistoryReader::genome(std::uint64_t id) const {
-  std::vector<std::uint8_t> bytes = genomeBytes(id);
-  try {
-    return deserializeGenome(bytes.data(), bytes.size());
-  } catch (const Error& e) {
-    throw InputError(path_ + ": genome of individual " + std::to_string(id) + ": " + e.what());
-  }
 }
 
 }  // namespace cambrian

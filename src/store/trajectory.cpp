@@ -134,12 +134,12 @@ TrajectoryRecorder::TrajectoryRecorder(std::uint64_t stride)
   trajectory_.frame_stride = stride_;
 }
 
-void TrajectoryRecorder::begin(const BodyPlan& plan, const PhysicsSettings& physics) {
+void TrajectoryRecorder::begin(const BodyPlan& plan, double time_step) {
   // a fresh recording of this body
   Trajectory fresh;
   fresh.frame_stride = stride_;
-  fresh.time_step = physics.time_step;
-  fresh.frame_rate = 1.0 / (static_cast<double>(stride_) * physics.time_step);
+  fresh.time_step = time_step;
+  fresh.frame_rate = 1.0 / (static_cast<double>(stride_) * time_step);
   for (const PartPlan& part : plan.parts) {
     fresh.half_extents.push_back(part.size * 0.5);
     fresh.parent.push_back(part.parent);

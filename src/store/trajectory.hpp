@@ -30,7 +30,7 @@ struct Trajectory {
   std::string source;              ///< where the creature came from: history path or genome file
   double fitness = 0;              ///< fitness of the evaluation that was recorded
   std::string status = "ok";       ///< statusName of that evaluation
-  std::string task;                ///< taskName ("walk", "jump")
+  std::string task;                ///< the task's name ("walk", "jump")
   double time_step = 0;            ///< physics step, s
   std::uint64_t frame_stride = 1;  ///< physics steps between two frames
   double frame_rate = 0;           ///< frames per simulated second = 1 / (stride * time_step)
@@ -62,7 +62,7 @@ class TrajectoryRecorder : public FrameObserver {
   /// The stride given at construction.
   std::uint64_t frameStride() const override { return stride_; }
   /// Takes the part sizes and parents from `plan`; forgets any earlier recording.
-  void begin(const BodyPlan& plan, const PhysicsSettings& physics) override;
+  void begin(const BodyPlan& plan, double time_step) override;
   /// Appends one frame.
   void frame(const EvalFrame& frame) override;
   /// What has been recorded so far (time_step and frame_stride set by begin()).

@@ -2,7 +2,7 @@
 // and the experiment file give, where a bad value is reported, the stored settings, and the
 // output directory's protection (a changed seed, a foreign history, a second run).
 #include "app/cli.hpp"
-#include "physics/simulation.hpp"
+#include "physics/physics_settings.hpp"
 #include "store/history.hpp"
 #include "store/run_lock.hpp"
 

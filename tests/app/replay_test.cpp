@@ -60,7 +60,7 @@ class ReplayCommand : public testing::Test {
   static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
 
   // every individual row of the run
-  static std::vector<HistoryIndividual> rows() { return HistoryReader(history_).individuals(); }
+  static std::vector<Individual> rows() { return HistoryReader(history_).individuals(); }
 
   static std::string dir_;
   static std::string history_;
@@ -72,8 +72,8 @@ std::string ReplayCommand::history_;
 // every creature that was evaluated with status ok replays to its stored fitness, bit for bit
 TEST_F(ReplayCommand, EveryOkCreatureReplaysBitForBit) {
   int replayed = 0;
-  for (const HistoryIndividual& row : rows()) {
-    if (row.status != EvalStatus::ok || row.worker_rank < 0)
+  for (const Individual& row : rows()) {
+    if (row.outcome.status != EvalStatus::ok || row.worker_rank < 0)
       continue;
     auto result = runCambrian("replay --history " + history_ + " --id " + std::to_string(row.id));
     ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -81,8 +81,8 @@ TEST_F(ReplayCommand, EveryOkCreatureReplaysBitForBit) {
         << result.output;
     auto fitness = words(lineStartingWith(result.output, "fitness"));
     ASSERT_EQ(fitness.size(), 3u) << result.output;
-    EXPECT_EQ(fitness[1], printed(row.fitness));
-    EXPECT_EQ(fitness[2], printed(row.fitness));
+    EXPECT_EQ(fitness[1], printed(row.fitness()));
+    EXPECT_EQ(fitness[2], printed(row.fitness()));
     ++replayed;
   }
   EXPECT_GE(replayed, 3);
@@ -90,15 +90,15 @@ TEST_F(ReplayCommand, EveryOkCreatureReplaysBitForBit) {
 
 // --best takes the best ok creature of the whole run, or of one generation
 TEST_F(ReplayCommand, BestOfRunAndOfGeneration) {
-  std::vector<HistoryIndividual> all = rows();
+  std::vector<Individual> all = rows();
   for (int generation : {-1, 0, 1}) {
-    const HistoryIndividual* best = nullptr;
-    for (const HistoryIndividual& row : all) {
-      if (row.status != EvalStatus::ok ||
+    const Individual* best = nullptr;
+    for (const Individual& row : all) {
+      if (row.outcome.status != EvalStatus::ok ||
           (generation >= 0 && row.generation != static_cast<std::uint64_t>(generation)))
         continue;
-      if (!best || row.fitness > best->fitness ||
-          (row.fitness == best->fitness && row.id < best->id))
+      if (!best || row.fitness() > best->fitness() ||
+          (row.fitness() == best->fitness() && row.id < best->id))
         best = &row;
     }
     ASSERT_NE(best, nullptr);
@@ -110,7 +110,7 @@ TEST_F(ReplayCommand, BestOfRunAndOfGeneration) {
     EXPECT_NE(result.output.find("creature       id " + std::to_string(best->id) + ","),
               std::string::npos)
         << result.output;
-    EXPECT_EQ(words(lineStartingWith(result.output, "fitness"))[1], printed(best->fitness));
+    EXPECT_EQ(words(lineStartingWith(result.output, "fitness"))[1], printed(best->fitness()));
   }
 }
 
@@ -141,9 +141,9 @@ TEST_F(ReplayCommand, MismatchIsReported) {
   // a copy of the history with one ok creature's stored fitness nudged by one ulp
   std::string copy = dir_ + "/tampered.h5";
   std::filesystem::copy_file(history_, copy, std::filesystem::copy_options::overwrite_existing);
-  std::vector<HistoryIndividual> all = rows();
+  std::vector<Individual> all = rows();
   std::size_t index = 0;
-  while (index < all.size() && all[index].status != EvalStatus::ok)
+  while (index < all.size() && all[index].outcome.status != EvalStatus::ok)
     ++index;
   ASSERT_LT(index, all.size());
   {

@@ -2,7 +2,7 @@
 #include "cambrian/error.hpp"
 
 #include "app/cli.hpp"
-#include "genome/cuts.hpp"
+#include "encodings/directed_graph/cuts.hpp"
 
 #include <gtest/gtest.h>
 

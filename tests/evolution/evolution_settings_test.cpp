@@ -2,6 +2,8 @@
 
 #include "cambrian/error.hpp"
 
+#include "core/settings.hpp"
+
 #include <gtest/gtest.h>
 
 namespace cambrian {
@@ -24,7 +26,7 @@ TEST(EvolutionSettings, DefaultsAreSimsAndChaumont) {
   EXPECT_DOUBLE_EQ(s.mutation_fraction, 0.4);
   EXPECT_DOUBLE_EQ(s.crossover_fraction, 0.3);
   EXPECT_DOUBLE_EQ(s.graft_fraction, 0.3);
-  EXPECT_DOUBLE_EQ(s.mutation.parameter_rate, 0.10);
+  EXPECT_DOUBLE_EQ(s.mutation_rate, 0.10);
   EXPECT_DOUBLE_EQ(s.post_crossover_mutation_chance, 0.1);
   EXPECT_DOUBLE_EQ(s.post_crossover_mutation_rate, 0.05);
 }
@@ -44,13 +46,28 @@ TEST(EvolutionSettings, ImpossibleValuesNameTheKeyAndValue) {
   EXPECT_NE(problem(s).find("evolution.tournament_size"), std::string::npos);
 }
 
-TEST(EvolutionSettings, SelectionNamesRoundTrip) {
+TEST(EvolutionSettings, SelectionNamesRoundTripThroughTheKey) {
+  EvolutionSettings s;
+  SettingsSchema schema;
+  s.declareSettings(schema);
   for (SelectionMethod m :
        {SelectionMethod::truncation, SelectionMethod::tournament, SelectionMethod::roulette,
         SelectionMethod::sus, SelectionMethod::rank}) {
-    EXPECT_EQ(selectionMethodFromName(selectionMethodName(m)), m);
+    schema.set("evolution.selection", selectionMethodName(m));
+    EXPECT_EQ(s.selection.method, m);
+    EXPECT_EQ(schema.find("evolution.selection")->text(), selectionMethodName(m));
   }
-  EXPECT_THROW(selectionMethodFromName("lottery"), ConfigError);
+  EXPECT_THROW(schema.set("evolution.selection", "lottery"), ConfigError);
+}
+
+TEST(EvolutionSettings, GenerationsAreRunOnlyAndTheSeedIsASeed) {
+  EvolutionSettings s;
+  SettingsSchema schema;
+  s.declareSettings(schema);
+  EXPECT_EQ(schema.runOnlyKeys(), (std::set<std::string>{"evolution.generations"}));
+  EXPECT_THROW(schema.set("run.seed", "-3"), SettingTypeError);
+  schema.set("run.seed", "18446744073709551615");
+  EXPECT_EQ(s.seed, UINT64_MAX);
 }
 
 }  // namespace

@@ -11,6 +11,9 @@
 #              selection, unconnected nodes collected, seed genomes
 #   simulate:  `cambrian simulate` on the hand-written creatures and random seeds (walk, jump,
 #              synthetic): status, fitness, every measure and the step count
+#   resume_v1: a run checkpointed by the cambrian of before the plug-in renovation
+#              (tests/store/data/v1_run: history.h5 and a version-1 checkpoint.h5 after 3 of 5
+#              generations) resumed at NP ranks: the digest of the straight run of that cambrian
 # Every name's line in expected.txt is "NAME VALUE"; the same NAME must give the same VALUE at
 # every rank count and in every build type (Debug and Release).
 set -euo pipefail
@@ -127,6 +130,21 @@ case $mode in
     done
     simulate simulate_random3_synthetic --random --seed 3 --task synthetic \
       --task.synthetic_cost_us 10 --task.synthetic_distribution lognormal
+    ;;
+  resume_v1)
+    cp -r "$source_dir/tests/store/data/v1_run" "$work/resume_v1"
+    evolve_args=(--task.name walk --task.evaluation_time 0.5 --evolution.population 8
+                 --evolution.generations 5 --seed 21 --run.checkpoint_every 1)
+    launch=()
+    if [ "$np" -gt 1 ]; then
+      launch=("$mpiexec" "$npflag" "$np" --oversubscribe)
+    fi
+    timeout -k 10 "$limit" "${launch[@]}" "$cambrian" evolve --quiet --out "$work/resume_v1" \
+      "${evolve_args[@]}" > "$work/resume_v1.out" 2> "$work/resume_v1.err" ||
+      fail "resume_v1: exit code $?; stderr: $(head -n 5 "$work/resume_v1.err")"
+    grep -q "resuming from" "$work/resume_v1.out" ||
+      fail "resume_v1: did not resume: $(head -n 3 "$work/resume_v1.out")"
+    check resume_v1 "$(awk '$1 == "digest" { print $2 }' "$work/resume_v1.out")"
     ;;
   *)
     fail "unknown mode $mode"

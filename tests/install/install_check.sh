@@ -23,7 +23,7 @@ cmake --install "$build" --prefix "$prefix" > "$work/install.log" || {
   cat "$work/install.log"; fail "cmake --install $build failed"; }
 
 # the files a user and an embedder need
-for f in bin/cambrian include/cambrian/evaluate.hpp include/cambrian/genome.hpp \
+for f in bin/cambrian include/cambrian/evaluate.hpp include/cambrian/encodings.hpp \
          include/cambrian/version.hpp lib/libcambrian_core.a lib/libcambrian_tasks.a \
          lib/cmake/cambrian/cambrianConfig.cmake lib/cmake/cambrian/cambrianConfigVersion.cmake \
          lib/cmake/cambrian/cambrianTargets.cmake; do

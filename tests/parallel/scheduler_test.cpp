@@ -2,11 +2,14 @@
 
 #include "cambrian/error.hpp"
 
+#include "core/settings.hpp"
+#include "encodings/directed_graph/encoding.hpp"
 #include "evolution/breeder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,7 +20,8 @@ namespace {
 Population smallPopulation() {
   EvolutionSettings settings;
   settings.population = 12;
-  Breeder breeder(settings, GenomeLimits{});
+  static const graph::DirectedGraphEncoding encoding;
+  Breeder breeder(settings, encoding);
   return breeder.initialPopulation();
 }
 
@@ -27,7 +31,8 @@ TEST(Scheduler, LongestExpectedFirstTiesById) {
   std::vector<std::size_t> order = schedulingOrder(p);
   EXPECT_EQ(order.size(), 11u);
   auto size = [&](std::size_t i) {
-    return p.individuals[i].genome.nodes.size() + p.individuals[i].genome.connections.size();
+    const graph::Genome& g = graph::graphGenome(p.individuals[i].genome);
+    return g.nodes.size() + g.connections.size();
   };
   for (std::size_t k = 1; k < order.size(); ++k) {
     EXPECT_TRUE(size(order[k - 1]) > size(order[k]) ||
@@ -38,7 +43,8 @@ TEST(Scheduler, LongestExpectedFirstTiesById) {
 
 // genome nodes + connections of individual i
 std::size_t sizeOf(const Population& p, std::size_t i) {
-  return p.individuals[i].genome.nodes.size() + p.individuals[i].genome.connections.size();
+  const graph::Genome& g = graph::graphGenome(p.individuals[i].genome);
+  return g.nodes.size() + g.connections.size();
 }
 
 // the indices of the pending individuals, sorted
@@ -99,12 +105,20 @@ TEST(Scheduler, ShuffledIsIndependentOfTheResults) {
   EXPECT_EQ(schedulingOrder(a, shuffled, 1), schedulingOrder(b, shuffled, 1));
 }
 
-TEST(Scheduler, DispatchOrderNames) {
-  EXPECT_EQ(dispatchOrderFromName("largest_first"), DispatchOrder::largest_first);
-  EXPECT_EQ(dispatchOrderFromName("shuffled"), DispatchOrder::shuffled);
-  EXPECT_EQ(dispatchOrderFromName("smallest_first"), DispatchOrder::smallest_first);
+TEST(Scheduler, DispatchOrderNamesAreRunOnlySettings) {
+  DispatchSettings dispatch;
+  SettingsSchema schema;
+  dispatch.declareSettings(schema);
+  schema.set("run.dispatch_order", "shuffled");
+  EXPECT_EQ(dispatch.order, DispatchOrder::shuffled);
+  schema.set("run.dispatch_order", "smallest_first");
+  EXPECT_EQ(dispatch.order, DispatchOrder::smallest_first);
+  schema.set("run.dispatch_seed", "12");
+  EXPECT_EQ(dispatch.seed, 12u);
+  EXPECT_EQ(schema.runOnlyKeys(),
+            (std::set<std::string>{"run.dispatch_order", "run.dispatch_seed"}));
   try {
-    dispatchOrderFromName("random");
+    schema.set("run.dispatch_order", "random");
     ADD_FAILURE() << "no ConfigError for 'random'";
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("run.dispatch_order = random"), std::string::npos)
@@ -114,9 +128,9 @@ TEST(Scheduler, DispatchOrderNames) {
 
 TEST(Scheduler, InProcessResultsDoNotDependOnTheDispatchOrder) {
   WorkerSettings settings;
-  settings.task.kind = TaskKind::synthetic;
-  settings.task.synthetic_cost_us = 20;
-  settings.task.synthetic_noise = 0.5;
+  settings.creature.set("task.name", "synthetic");
+  settings.creature.set("task.synthetic_cost_us", "20");
+  settings.creature.set("task.synthetic_noise", "0.5");
   // the same outcomes, by id, whichever order evaluates them
   std::vector<Population> done;
   for (DispatchOrder order :
@@ -134,16 +148,10 @@ TEST(Scheduler, InProcessResultsDoNotDependOnTheDispatchOrder) {
   }
 }
 
-TEST(Scheduler, EvaluationSeedIsAPureFunctionOfSeedAndId) {
-  EXPECT_EQ(evaluationSeed(1, 5), evaluationSeed(1, 5));
-  EXPECT_NE(evaluationSeed(1, 5), evaluationSeed(1, 6));
-  EXPECT_NE(evaluationSeed(1, 5), evaluationSeed(2, 5));
-}
-
 TEST(Scheduler, InProcessEvaluatorFillsOnlyTheMissingOutcomes) {
   WorkerSettings settings;
-  settings.task.kind = TaskKind::synthetic;
-  settings.task.synthetic_cost_us = 50;
+  settings.creature.set("task.name", "synthetic");
+  settings.creature.set("task.synthetic_cost_us", "50");
   InProcessEvaluator evaluator(settings);
   Population p = smallPopulation();
   p.individuals[0].evaluated = true;

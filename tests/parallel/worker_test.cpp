@@ -2,6 +2,8 @@
 
 #include "cambrian/error.hpp"
 
+#include "encodings/directed_graph/encoding.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -14,13 +16,14 @@ namespace {
 
 WorkerSettings synthetic() {
   WorkerSettings settings;
-  settings.task.kind = TaskKind::synthetic;
-  settings.task.synthetic_cost_us = 100;
+  settings.creature.set("task.name", "synthetic");
+  settings.creature.set("task.synthetic_cost_us", "100");
   return settings;
 }
 
 EvalRequest requestFor(std::uint64_t id) {
-  return EvalRequest{id, 3, serializeGenome(randomGenome(GenomeLimits{}, 1, 0, id))};
+  return EvalRequest{id, 3,
+                     graph::serializeGenome(graph::randomGenome(graph::GenomeLimits{}, 1, 0, id))};
 }
 
 TEST(Worker, EvaluatesARequest) {

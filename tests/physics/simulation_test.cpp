@@ -1,4 +1,7 @@
+// Tests of a creature in a world: birth, rest, actuation, the monitors, determinism.
 #include "physics/simulation.hpp"
+
+#include "brain/neural_network.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,17 +22,35 @@ PartPlan box(Vec3 size, Vec3 position, int parent = -1) {
   return part;
 }
 
-// one block with a contact sensor
-BodyPlan singleBlock() {
+// a body and the network that drives it
+struct TestCreature {
   BodyPlan plan;
+  std::shared_ptr<NeuralNetworkPlan> network = std::make_shared<NeuralNetworkPlan>();
+};
+
+// a creature in a world on the plane
+struct Sim {
+  Environment environment;
+  Simulation simulation;
+  Sim(const TestCreature& c, const PhysicsSettings& settings, double birth_height = 0)
+      : simulation(c.plan, c.network.get(), environment, settings, birth_height) {}
+};
+
+// one block with a contact sensor
+TestCreature singleBlock() {
+  TestCreature creature;
+  BodyPlan& plan = creature.plan;
   plan.parts.push_back(box({0.2, 0.2, 0.2}, {0, 0, 0}));
   plan.sensors.push_back({SensorKind::contact, 0, 0});
-  return plan;
+  creature.network->sensor_count = 1;
+  return creature;
 }
 
-// a root block and a hinged child on its +x face; effector 0 reads neuron 0 (a constant)
-BodyPlan hinged(double command) {
-  BodyPlan plan;
+// a root block and a hinged child on its +x face (sensors: joint angle, two contacts);
+// effector 0 reads neuron 0 (a constant)
+TestCreature hinged(double command) {
+  TestCreature creature;
+  BodyPlan& plan = creature.plan;
   plan.parts.push_back(box({0.4, 0.2, 0.1}, {0, 0, 0}));
   PartPlan child = box({0.3, 0.1, 0.1}, {0.35, 0, 0}, 0);
   child.joint = JointType::revolute;
@@ -45,20 +66,19 @@ BodyPlan hinged(double command) {
   NeuronPlan constant;
   constant.function = NeuronFunction::constant;
   constant.parameter = command;
-  plan.neurons.push_back(constant);
-  EffectorPlan effector;
-  effector.part = 1;
-  effector.dof = 0;
-  effector.input = {plan.neuronSignal(0), 1.0};
-  plan.effectors.push_back(effector);
-  return plan;
+  creature.network->sensor_count = plan.sensors.size();
+  creature.network->neurons.push_back(constant);
+  plan.effectors.push_back(EffectorPlan{1, 0});
+  creature.network->effector_inputs.push_back({creature.network->neuronSignal(0), 1.0});
+  return creature;
 }
 
 // a dropped block falls, lands and comes to rest on the ground
 TEST(Simulation, DroppedBlockComesToRest) {
-  BodyPlan plan = singleBlock();
+  TestCreature creature = singleBlock();
   PhysicsSettings settings;
-  Simulation simulation(plan, settings, {10, 0, 0}, 0.5);
+  Sim sim(creature, settings, 0.5);
+  Simulation& simulation = sim.simulation;
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
   EXPECT_NEAR(simulation.lowestPoint(), 0.5, 1e-9);
   for (int s = 0; s < 480; ++s)
@@ -71,23 +91,25 @@ TEST(Simulation, DroppedBlockComesToRest) {
   EXPECT_NEAR(simulation.lowestPoint(), 0.0, 2e-3);
   EXPECT_NEAR(after.z, 0.1, 2e-3);
   EXPECT_LT(norm(after - before), 1e-4);
-  EXPECT_EQ(simulation.partContacts()[0], 1);
+  EXPECT_EQ(simulation.sensors()[0], 1.0);  // the contact sensor
 }
 
 // a creature is born resting on the ground, not above or inside it
 TEST(Simulation, BornOnTheGround) {
-  BodyPlan plan = hinged(0);
-  Simulation simulation(plan, PhysicsSettings{});
+  TestCreature creature = hinged(0);
+  Sim sim(creature, PhysicsSettings{});
+  Simulation& simulation = sim.simulation;
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
   EXPECT_NEAR(simulation.lowestPoint(), 0.0, 1e-12);
 }
 
 // parts that overlap at birth are rejected with a status, not simulated
 TEST(Simulation, SelfPenetrationAtBirth) {
-  BodyPlan plan = hinged(0);
-  PartPlan twin = plan.parts[1];
-  plan.parts.push_back(twin);  // a sibling exactly where the first child is
-  Simulation simulation(plan, PhysicsSettings{});
+  TestCreature creature = hinged(0);
+  PartPlan twin = creature.plan.parts[1];
+  creature.plan.parts.push_back(twin);  // a sibling exactly where the first child is
+  Sim sim(creature, PhysicsSettings{});
+  Simulation& simulation = sim.simulation;
   EXPECT_EQ(simulation.status(), EvalStatus::self_penetration);
   EXPECT_NE(simulation.message().find("overlap"), std::string::npos);
   simulation.step(true);
@@ -96,26 +118,28 @@ TEST(Simulation, SelfPenetrationAtBirth) {
 
 // a driven joint moves the child, and the joint-angle sensor reports it
 TEST(Simulation, EffectorMovesJoint) {
-  BodyPlan plan = hinged(1.0);
+  TestCreature creature = hinged(1.0);
   PhysicsSettings settings;
-  Simulation simulation(plan, settings);
+  Sim sim(creature, settings);
+  Simulation& simulation = sim.simulation;
   for (int s = 0; s < 240; ++s)
     simulation.step(true);
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
-  EXPECT_GT(std::abs(simulation.brain().signals()[0]), 0.05);
+  EXPECT_GT(std::abs(simulation.sensors()[0]), 0.05);
 }
 
 // a saturated motor drives its joint no faster than the motor speed
 TEST(Simulation, SaturatedMotorKeepsToItsSpeed) {
-  BodyPlan plan = hinged(1.0);
+  TestCreature creature = hinged(1.0);
   PhysicsSettings settings;
   settings.gravity = 0;
   settings.motor_speed = 1.0;
-  Simulation simulation(plan, settings);
+  Sim sim(creature, settings);
+  Simulation& simulation = sim.simulation;
   double previous = 0;
   for (int s = 0; s < 120; ++s) {
     simulation.step(true);
-    double angle = simulation.brain().signals()[0];  // joint angle / limit, limit = 1 rad
+    double angle = simulation.sensors()[0];  // joint angle / limit, limit = 1 rad
     EXPECT_LE(std::abs(angle - previous), 1.02 * settings.motor_speed * settings.time_step)
         << "step " << s;
     previous = angle;
@@ -129,15 +153,16 @@ TEST(Simulation, SaturatedMotorKeepsToItsSpeed) {
 TEST(Simulation, SaturatedMotorTorqueFollowsTheCommand) {
   std::array<double, 2> angle{};
   for (int c = 0; c < 2; ++c) {
-    BodyPlan plan = hinged(c == 0 ? 1e-4 : 1.0);
+    TestCreature creature = hinged(c == 0 ? 1e-4 : 1.0);
     PhysicsSettings settings;
     settings.gravity = 0;
     settings.motor_speed = 1.0;
-    Simulation simulation(plan, settings);
+    Sim sim(creature, settings);
+    Simulation& simulation = sim.simulation;
     for (int s = 0; s < 120; ++s)
       simulation.step(true);
     ASSERT_EQ(simulation.status(), EvalStatus::ok);
-    angle[c] = std::abs(simulation.brain().signals()[0]);
+    angle[c] = std::abs(simulation.sensors()[0]);
   }
   EXPECT_LT(angle[0], 0.05);
   EXPECT_GT(angle[1], 0.4);
@@ -146,10 +171,11 @@ TEST(Simulation, SaturatedMotorTorqueFollowsTheCommand) {
 // under saturated motors even an absurd strength cannot push a joint past the motor speed,
 // so the body stays finite
 TEST(Simulation, SaturatedMotorWithAbsurdStrengthStaysFinite) {
-  BodyPlan plan = hinged(1.0);
+  TestCreature creature = hinged(1.0);
   PhysicsSettings settings;
   settings.strength_per_area = 1e12;
-  Simulation simulation(plan, settings);
+  Sim sim(creature, settings);
+  Simulation& simulation = sim.simulation;
   for (int s = 0; s < 2400; ++s)
     simulation.step(true);
   EXPECT_EQ(simulation.status(), EvalStatus::ok) << simulation.message();
@@ -157,11 +183,12 @@ TEST(Simulation, SaturatedMotorWithAbsurdStrengthStaysFinite) {
 
 // an absurdly strong explicit torque breaks the physics and is caught as a status, not a crash
 TEST(Simulation, ExplosionIsCaught) {
-  BodyPlan plan = hinged(1.0);
+  TestCreature creature = hinged(1.0);
   PhysicsSettings settings;
   settings.actuation = Actuation::torque;
   settings.strength_per_area = 1e12;
-  Simulation simulation(plan, settings);
+  Sim sim(creature, settings);
+  Simulation& simulation = sim.simulation;
   for (int s = 0; s < 2400 && simulation.status() == EvalStatus::ok; ++s)
     simulation.step(true);
   // the speed monitor sees it before any state turns non-finite
@@ -173,10 +200,11 @@ TEST(Simulation, ExplosionIsCaught) {
 // a non-finite state is caught as non_finite (not exploded) on the step it appears, and
 // stepping then stops; NaN gravity makes every part's position NaN after one step
 TEST(Simulation, NonFiniteStateIsCaught) {
-  BodyPlan plan = hinged(0.5);
+  TestCreature creature = hinged(0.5);
   PhysicsSettings settings;
   settings.gravity = std::nan("");
-  Simulation simulation(plan, settings);
+  Sim sim(creature, settings);
+  Simulation& simulation = sim.simulation;
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
   simulation.step(true);
   EXPECT_EQ(simulation.status(), EvalStatus::non_finite) << simulation.message();
@@ -188,10 +216,11 @@ TEST(Simulation, NonFiniteStateIsCaught) {
 
 // the same plan simulated twice in one process gives bit-identical states
 TEST(Simulation, Deterministic) {
-  BodyPlan plan = hinged(0.7);
+  TestCreature creature = hinged(0.7);
   std::vector<Transform> first, second;
   for (auto* poses : {&first, &second}) {
-    Simulation simulation(plan, PhysicsSettings{});
+    Sim sim(creature, PhysicsSettings{});
+    Simulation& simulation = sim.simulation;
     for (int s = 0; s < 500; ++s)
       simulation.step(true);
     simulation.partPoses(*poses);
@@ -201,6 +230,44 @@ TEST(Simulation, Deterministic) {
     EXPECT_EQ(first[i].position, second[i].position);
     EXPECT_EQ(first[i].rotation, second[i].rotation);
   }
+}
+
+// the controller's drives become commands clamped to [-1, 1]; off, nothing is commanded
+TEST(Simulation, DrivesAreClampedIntoCommands) {
+  TestCreature creature = hinged(7.5);
+  Sim sim(creature, PhysicsSettings{});
+  Simulation& simulation = sim.simulation;
+  simulation.step(false);
+  EXPECT_EQ(simulation.commands()[0], 0.0);
+  simulation.step(true);
+  EXPECT_EQ(simulation.commands()[0], 1.0);
+  ASSERT_NE(simulation.controller(), nullptr);
+}
+
+// a creature without a controller lives, its joints undriven
+TEST(Simulation, NoControllerDrivesNothing) {
+  TestCreature creature = hinged(1.0);
+  Environment environment;
+  Simulation simulation(creature.plan, nullptr, environment, PhysicsSettings{});
+  for (int s = 0; s < 120; ++s)
+    simulation.step(true);
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  EXPECT_EQ(simulation.controller(), nullptr);
+  EXPECT_LT(std::abs(simulation.sensors()[0]), 0.05);
+}
+
+// the photosensors point at the environment's light
+TEST(Simulation, PhotosensorsPointAtTheLight) {
+  TestCreature creature = singleBlock();
+  creature.plan.sensors.push_back({SensorKind::photo, 0, 0});
+  creature.plan.sensors.push_back({SensorKind::photo, 0, 1});
+  creature.network->sensor_count = 3;
+  Environment environment;
+  environment.light = {0, 10, 0.1};
+  Simulation simulation(creature.plan, creature.network.get(), environment, PhysicsSettings{});
+  simulation.step(false);
+  EXPECT_NEAR(simulation.sensors()[1], 0.0, 1e-6);
+  EXPECT_NEAR(simulation.sensors()[2], 1.0, 1e-3);
 }
 
 }  // namespace

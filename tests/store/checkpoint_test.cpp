@@ -1,8 +1,10 @@
+// Tests of the checkpoint file: round trips, rotation, a writer killed mid-write, bad files, a
+// version-1 checkpoint of an earlier cambrian still read.
 #include "store/checkpoint.hpp"
 
 #include "cambrian/error.hpp"
-#include "cambrian/genome.hpp"
 
+#include "encodings/directed_graph/encoding.hpp"
 #include "store/history.hpp"
 
 #include <gtest/gtest.h>
@@ -29,6 +31,8 @@ std::string tempDir(const std::string& name) {
   return dir;
 }
 
+const std::vector<MeasureInfo> kMeasures = {{"distance", "m"}};
+
 const std::string kConfig =
     "[evolution]\ngenerations = 5\npopulation = 4\n\n[physics]\ntime_step = 0.004\n\n[run]\n"
     "out = a\nquiet = true\nseed = 9\n";
@@ -37,6 +41,7 @@ const std::string kConfig =
 CheckpointState makeState(std::uint64_t generation, std::uint64_t salt = 0) {
   CheckpointState state;
   state.config_text = kConfig;
+  state.config_hash = "0123456789abcdef";
   state.seed = 9;
   state.next_generation = generation + 1;
   state.next_id = 100 + salt;
@@ -49,7 +54,8 @@ CheckpointState makeState(std::uint64_t generation, std::uint64_t salt = 0) {
     individual.generation = generation;
     individual.origin = i == 0 ? Origin::elite : (i == 1 ? Origin::crossover : Origin::mutation);
     individual.parents = i == 1 ? std::vector<std::uint64_t>{3, 5} : std::vector<std::uint64_t>{2};
-    individual.genome = randomGenome(GenomeLimits{}, 7 + salt, 0, i);
+    individual.genome =
+        graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 7 + salt, 0, i));
     individual.evaluated = true;
     individual.outcome.fitness = i == 3 ? std::nan("") : 1.25 + static_cast<double>(i);
     individual.outcome.status = i == 2 ? EvalStatus::failed : EvalStatus::ok;
@@ -110,6 +116,7 @@ TEST(Checkpoint, RoundTripsEveryField) {
 
   // scalars
   EXPECT_EQ(back.config_text, state.config_text);
+  EXPECT_EQ(back.config_hash, state.config_hash);
   EXPECT_EQ(back.seed, 9u);
   EXPECT_EQ(back.next_generation, 4u);
   EXPECT_EQ(back.next_id, 100u);
@@ -126,7 +133,10 @@ TEST(Checkpoint, RoundTripsEveryField) {
     EXPECT_EQ(a.generation, b.generation);
     EXPECT_EQ(a.parents, b.parents);
     EXPECT_EQ(a.origin, b.origin);
-    EXPECT_EQ(serializeGenome(a.genome), serializeGenome(b.genome));
+    EXPECT_EQ(a.genomeBytes(), b.genomeBytes());
+    EXPECT_EQ(a.outcome.wall_seconds, b.outcome.wall_seconds);
+    EXPECT_EQ(a.outcome.joints, b.outcome.joints);
+    EXPECT_EQ(a.outcome.neurons, b.outcome.neurons);
     EXPECT_EQ(std::memcmp(&a.outcome.fitness, &b.outcome.fitness, sizeof(double)), 0);
     EXPECT_EQ(a.outcome.status, b.outcome.status);
     EXPECT_EQ(a.outcome.measures, b.outcome.measures);
@@ -213,7 +223,7 @@ TEST(Checkpoint, NonHdf5AndForeignFilesAreRefused) {
   std::filesystem::remove(path);
   {
     HistoryAttributes attributes;
-    HistoryWriter writer(path, attributes);
+    HistoryWriter writer(path, attributes, kMeasures);
   }
   std::tie(code, message) = failure([&] { readCheckpoint(path); });
   EXPECT_EQ(code, ExitCode::checkpoint);
@@ -240,7 +250,10 @@ TEST(Checkpoint, NewerFormatVersionIsRefused) {
   });
   auto [code, message] = failure([&] { readCheckpoint(checkpointPath(dir)); });
   EXPECT_EQ(code, ExitCode::checkpoint);
-  EXPECT_NE(message.find("format_version 2 is not supported"), std::string::npos) << message;
+  EXPECT_NE(message.find("format_version " + std::to_string(kCheckpointFormatVersion + 1) +
+                         " is not supported"),
+            std::string::npos)
+      << message;
 }
 
 TEST(Checkpoint, ChangedContentsFailTheStateHash) {
@@ -272,13 +285,11 @@ TEST(Checkpoint, MissingButExpectedIsAnError) {
   // a history that records a checkpoint
   dir = tempDir("missing_recorded");
   {
-    HistoryWriter writer(dir + "/history.h5", HistoryAttributes{});
-    HistoryGeneration row;
-    row.count = 0;
+    HistoryWriter writer(dir + "/history.h5", HistoryAttributes{}, kMeasures);
+    GenerationRecord row;
     writer.appendGeneration({}, row);
-    GenerationTimes times;
-    times.checkpoint_seconds = 0.25;
-    writer.completeLastGeneration(times);
+    row.checkpoint_seconds = 0.25;
+    writer.completeLastGeneration(row);
   }
   std::tie(code, message) = failure([&] { findCheckpoint(dir); });
   EXPECT_EQ(code, ExitCode::checkpoint);
@@ -287,8 +298,8 @@ TEST(Checkpoint, MissingButExpectedIsAnError) {
   // a history with generations but no checkpoint: refused, the history kept
   dir = tempDir("missing_unrecorded");
   {
-    HistoryWriter writer(dir + "/history.h5", HistoryAttributes{});
-    writer.appendGeneration({}, HistoryGeneration{});
+    HistoryWriter writer(dir + "/history.h5", HistoryAttributes{}, kMeasures);
+    writer.appendGeneration({}, GenerationRecord{});
   }
   auto size_before = std::filesystem::file_size(dir + "/history.h5");
   std::tie(code, message) = failure([&] { findCheckpoint(dir); });
@@ -315,7 +326,7 @@ TEST(Checkpoint, MissingButExpectedIsAnError) {
 
   // a history without a complete generation (killed during the first): a fresh run
   dir = tempDir("missing_empty_history");
-  { HistoryWriter writer(dir + "/history.h5", HistoryAttributes{}); }
+  { HistoryWriter writer(dir + "/history.h5", HistoryAttributes{}, kMeasures); }
   EXPECT_FALSE(findCheckpoint(dir).has_value());
 }
 
@@ -328,55 +339,33 @@ TEST(Checkpoint, RemoveCheckpointsClearsEveryFile) {
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
-TEST(CheckpointSettings, RunOnlyKeysMayChangeOthersMayNot) {
-  std::string changed_out = kConfig;
-  changed_out.replace(changed_out.find("out = a"), 7, "out = b");
-  changed_out.replace(changed_out.find("generations = 5"), 15, "generations = 9");
-  EXPECT_NO_THROW(checkResumeSettings("ck.h5", kConfig, changed_out));
-  EXPECT_EQ(resultConfigHash(kConfig), resultConfigHash(changed_out));
-  EXPECT_NE(configHash(kConfig), configHash(changed_out));
-
-  // a physics key: named with both values
-  std::string changed_step = kConfig;
-  changed_step.replace(changed_step.find("0.004"), 5, "0.002");
-  auto [code, message] = failure([&] { checkResumeSettings("ck.h5", kConfig, changed_step); });
-  EXPECT_EQ(code, ExitCode::checkpoint);
-  EXPECT_NE(message.find("ck.h5"), std::string::npos) << message;
-  EXPECT_NE(message.find("physics.time_step was '0.004'"), std::string::npos) << message;
-  EXPECT_NE(message.find("'0.002' now"), std::string::npos) << message;
-  EXPECT_NE(resultConfigHash(kConfig), resultConfigHash(changed_step));
-
-  // the seed, and a key one side lacks
-  std::string changed_seed = kConfig;
-  changed_seed.replace(changed_seed.find("seed = 9"), 8, "seed = 10");
-  std::tie(code, message) = failure([&] { checkResumeSettings("ck.h5", kConfig, changed_seed); });
-  EXPECT_NE(message.find("run.seed"), std::string::npos) << message;
-  std::tie(code, message) =
-      failure([&] { checkResumeSettings("ck.h5", kConfig, kConfig + "\n[task]\nname = walk\n"); });
-  EXPECT_NE(message.find("task.name was (absent)"), std::string::npos) << message;
-
-  // a key added since the checkpoint: no change at its default, a change at another value
-  std::string defaults = kConfig + "\n[task]\nrest_check = false\n";
-  EXPECT_NO_THROW(checkResumeSettings("ck.h5", kConfig, defaults, defaults));
-  std::tie(code, message) = failure([&] {
-    checkResumeSettings("ck.h5", kConfig, kConfig + "\n[task]\nrest_check = true\n", defaults);
-  });
-  EXPECT_EQ(code, ExitCode::checkpoint);
-  EXPECT_NE(message.find("task.rest_check was (absent)"), std::string::npos) << message;
-  // a key the current settings lack is a change whatever the defaults say
-  std::tie(code, message) =
-      failure([&] { checkResumeSettings("ck.h5", defaults, kConfig, defaults); });
-  EXPECT_NE(message.find("task.rest_check was 'false'"), std::string::npos) << message;
-}
-
-TEST(CheckpointSettings, ParsesConfigText) {
-  auto settings = settingsOfConfigText(kConfig);
-  EXPECT_EQ(settings.at("physics.time_step"), "0.004");
-  EXPECT_EQ(settings.at("run.out"), "a");
-  EXPECT_TRUE(isRunOnlySetting("run.max_hours"));
-  EXPECT_FALSE(isRunOnlySetting("run.seed"));
-  EXPECT_FALSE(isRunOnlySetting("evolution.population"));
-  EXPECT_EQ(resultConfigText(kConfig).find("out = a"), std::string::npos);
+// a checkpoint written by cambrian before the plug-in renovation (format version 1, one column
+// per outcome field) reads: the population, its genomes and outcomes
+TEST(Checkpoint, ReadsAVersionOneCheckpoint) {
+  const std::string path =
+      std::string(CAMBRIAN_SOURCE_DIR) + "/tests/store/data/v1_run/checkpoint.h5";
+  CheckpointState state = readCheckpoint(path);
+  EXPECT_EQ(state.seed, 21u);
+  EXPECT_EQ(state.next_generation, 3u);
+  ASSERT_EQ(state.population.individuals.size(), 8u);
+  for (const Individual& individual : state.population.individuals) {
+    EXPECT_EQ(individual.genome.encoding().name(), "directed_graph");
+    EXPECT_TRUE(individual.evaluated);
+    if (individual.outcome.status == EvalStatus::ok) {
+      EXPECT_FALSE(std::isnan(individual.outcome.measure("distance")));
+    }
+  }
+  // written again, it is a version-2 checkpoint with the same population
+  std::string dir = tempDir("rewritten_v1");
+  writeCheckpoint(dir, state);
+  CheckpointState back = readCheckpoint(checkpointPath(dir));
+  for (std::size_t i = 0; i < 8; ++i) {
+    const Individual& a = state.population.individuals[i];
+    const Individual& b = back.population.individuals[i];
+    EXPECT_EQ(a.genomeBytes(), b.genomeBytes());
+    EXPECT_EQ(a.outcome.measures, b.outcome.measures);
+    EXPECT_EQ(std::memcmp(&a.outcome.fitness, &b.outcome.fitness, sizeof(double)), 0);
+  }
 }
 
 }  // namespace

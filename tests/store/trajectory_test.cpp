@@ -1,11 +1,12 @@
 // tests of the trajectory file (traj.h5) and of recording one during an evaluation
 #include "store/trajectory.hpp"
 
+#include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
 #include "cambrian/evaluate.hpp"
-#include "cambrian/genome.hpp"
 
 #include "brain/allocation_counter.hpp"
+#include "physics/physics_settings.hpp"
 #include "store/history.hpp"
 
 #include <gtest/gtest.h>
@@ -172,7 +173,7 @@ TEST(Trajectory, BadFiles) {
   std::ofstream(text) << "not hdf5 at all\n";
   expectInputError(text, "not an HDF5 file");
   std::string history = tempPath("history.h5");
-  { HistoryWriter writer(history, HistoryAttributes{}); }
+  { HistoryWriter writer(history, HistoryAttributes{}, {{"distance", "m"}}); }
   expectInputError(history, "not a cambrian trajectory");
 }
 
@@ -187,25 +188,23 @@ TEST(Trajectory, FrameStride) {
 
 // a hand-written walker, short walk task
 struct Walker {
-  Genome genome =
+  Genotype genome =
       readGenomeFile(std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/walker4.genome");
-  GenomeLimits limits;
-  PhysicsSettings physics;
-  TaskSettings task;
+  CreatureSettings settings;
   Walker() {
-    task.settle_time = 0.25;
-    task.trial_time = 0.25;
-    task.resettle_time = 0.25;
-    task.evaluation_time = 0.5;
+    settings.set("task.settle_time", "0.25");
+    settings.set("task.trial_time", "0.25");
+    settings.set("task.resettle_time", "0.25");
+    settings.set("task.evaluation_time", "0.5");
   }
 };
 
 // recording changes nothing: the outcome is bit-identical with and without an observer
 TEST(TrajectoryRecorder, ObservingDoesNotChangeTheOutcome) {
   Walker w;
-  Outcome plain = evaluate(w.genome, w.limits, w.task, w.physics, 7);
+  Outcome plain = evaluate(w.genome, w.settings, 7);
   TrajectoryRecorder recorder(3);
-  Outcome observed = evaluate(w.genome, w.limits, w.task, w.physics, 7, &recorder);
+  Outcome observed = evaluate(w.genome, w.settings, 7, &recorder);
   ASSERT_EQ(plain.status, EvalStatus::ok) << plain.message;
   EXPECT_EQ(std::memcmp(&plain.fitness, &observed.fitness, sizeof plain.fitness), 0)
       << plain.fitness << " vs " << observed.fitness;
@@ -218,10 +217,10 @@ TEST(TrajectoryRecorder, FramesAndPhases) {
   Walker w;
   const std::uint64_t stride = 6;
   TrajectoryRecorder recorder(stride);
-  Outcome outcome = evaluate(w.genome, w.limits, w.task, w.physics, 7, &recorder);
+  Outcome outcome = evaluate(w.genome, w.settings, 7, &recorder);
   ASSERT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
   const Trajectory& t = recorder.trajectory();
-  BodyPlan plan = develop(w.genome, w.limits);
+  BodyPlan plan = w.settings.encoding().develop(w.genome).body;
   ASSERT_EQ(t.partCount(), plan.parts.size());
   for (std::size_t p = 0; p < plan.parts.size(); ++p) {
     EXPECT_EQ(t.half_extents[p], plan.parts[p].size * 0.5);
@@ -232,7 +231,7 @@ TEST(TrajectoryRecorder, FramesAndPhases) {
   EXPECT_EQ(t.step.front(), 0u);
   EXPECT_EQ(t.time.front(), 0.0);
   EXPECT_EQ(t.frame_stride, stride);
-  EXPECT_DOUBLE_EQ(t.frame_rate, 1.0 / (stride * w.physics.time_step));
+  EXPECT_DOUBLE_EQ(t.frame_rate, 1.0 / (stride * w.settings.physics().time_step));
   for (std::size_t f = 1; f < t.frameCount(); ++f) {
     EXPECT_EQ(t.step[f], t.step[f - 1] + stride);
     EXPECT_LE(t.phase[f - 1], t.phase[f]) << "frame " << f;
@@ -248,10 +247,10 @@ TEST(TrajectoryRecorder, FramesAndPhases) {
 TEST(TrajectoryRecorder, PlainPathDoesNotAllocatePerStep) {
   Walker w;
   auto allocations = [&](double seconds) {
-    TaskSettings task = w.task;
-    task.evaluation_time = seconds;
+    CreatureSettings settings = w.settings;
+    settings.set("task.evaluation_time", std::to_string(seconds));
     long before = allocationCount();
-    Outcome outcome = evaluate(w.genome, w.limits, task, w.physics, 7);
+    Outcome outcome = evaluate(w.genome, settings, 7);
     EXPECT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
     return allocationCount() - before;
   };
@@ -262,10 +261,10 @@ TEST(TrajectoryRecorder, PlainPathDoesNotAllocatePerStep) {
 // a creature that never reaches the physics shows no body and no frames
 TEST(TrajectoryRecorder, InvalidCreatureRecordsNothing) {
   Walker w;
-  GenomeLimits tight = w.limits;
-  tight.max_nodes = 1;
+  CreatureSettings tight = w.settings;
+  tight.set("genome.max_nodes", "1");
   TrajectoryRecorder recorder(4);
-  Outcome outcome = evaluate(w.genome, tight, w.task, w.physics, 7, &recorder);
+  Outcome outcome = evaluate(w.genome, tight, 7, &recorder);
   EXPECT_EQ(outcome.status, EvalStatus::invalid_body);
   EXPECT_EQ(recorder.trajectory().partCount(), 0u);
   EXPECT_EQ(recorder.trajectory().frameCount(), 0u);

@@ -1,4 +1,13 @@
+// Tests of evaluating one creature through the creature settings: walking, passivity, viability,
+// determinism, every failure status, the observer, jump heights, normalisations, the known
+// exploits, and the rest rule.
 #include "cambrian/evaluate.hpp"
+
+#include "cambrian/encodings.hpp"
+
+#include "encodings/directed_graph/encoding.hpp"
+#include "physics/physics_settings.hpp"
+#include "tasks/episode.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,13 +20,41 @@
 namespace cambrian {
 namespace {
 
+using graph::ConnectionGene;
+using graph::Genome;
+using graph::PartGene;
+
 const std::string kCreatures = std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/";
 
-// short settings so the suite stays quick
-TaskSettings shortWalk() {
-  TaskSettings task;
-  task.evaluation_time = 3;
-  return task;
+// settings with `changes` (key, value) applied and checked
+CreatureSettings settingsWith(
+    std::initializer_list<std::pair<const char*, const char*>> changes = {}) {
+  CreatureSettings settings;
+  for (const auto& [key, value] : changes)
+    settings.set(key, value);
+  settings.check();
+  return settings;
+}
+
+// a 3 s walk, so the suite stays quick, with `changes` applied
+CreatureSettings shortWalk(
+    std::initializer_list<std::pair<const char*, const char*>> changes = {}) {
+  CreatureSettings settings = settingsWith({{"task.evaluation_time", "3"}});
+  for (const auto& [key, value] : changes)
+    settings.set(key, value);
+  settings.check();
+  return settings;
+}
+
+// a directed-graph genome of a hand-written creature
+Genome creature(const std::string& name) {
+  return graph::graphGenome(readGenomeFile(kCreatures + name));
+}
+
+// evaluates a directed-graph genome
+Outcome evaluateGraph(const Genome& genome, const CreatureSettings& settings,
+                      FrameObserver* observer = nullptr) {
+  return evaluate(graph::makeGenotype(genome), settings, 0, observer);
 }
 
 // every effector and joint controller switched off
@@ -35,8 +72,8 @@ bool bitIdentical(double a, double b) {
 
 // the hand-written walker walks: a positive distance with status ok
 TEST(Evaluate, WalkerMoves) {
-  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
-  Outcome outcome = evaluate(walker, GenomeLimits{}, shortWalk(), PhysicsSettings{});
+  Genome walker = creature("walker4.genome");
+  Outcome outcome = evaluateGraph(walker, shortWalk());
   ASSERT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
   EXPECT_EQ(outcome.parts, 5);
   EXPECT_EQ(outcome.joints, 4);
@@ -48,8 +85,8 @@ TEST(Evaluate, WalkerMoves) {
 // no energy from nothing: with every effector off, creatures do not travel
 TEST(Evaluate, NoEffectorsNoTravel) {
   for (const char* name : {"walker4.genome", "snake.genome", "pole.genome"}) {
-    Genome passive = withoutEffectors(readGenomeFile(kCreatures + name));
-    Outcome outcome = evaluate(passive, GenomeLimits{}, shortWalk(), PhysicsSettings{});
+    Genome passive = withoutEffectors(creature(name));
+    Outcome outcome = evaluateGraph(passive, shortWalk());
     ASSERT_EQ(outcome.status, EvalStatus::ok) << name << ": " << outcome.message;
     EXPECT_LT(outcome.measure("distance"), 0.005) << name;
   }
@@ -57,13 +94,13 @@ TEST(Evaluate, NoEffectorsNoTravel) {
 
 // passive random creatures do not travel either
 TEST(Evaluate, PassiveRandomCreaturesStayPut) {
-  GenomeLimits limits;
+  CreatureSettings settings = shortWalk();
   int evaluated = 0;
   for (std::uint64_t seed = 1; seed <= 200 && evaluated < 10; ++seed) {
-    Genome passive = withoutEffectors(randomGenome(limits, seed));
-    if (!isViable(passive, limits, PhysicsSettings{}))
+    Genome passive = withoutEffectors(graph::randomGenome(graph::GenomeLimits{}, seed));
+    if (!isViable(graph::makeGenotype(passive), settings))
       continue;
-    Outcome outcome = evaluate(passive, limits, shortWalk(), PhysicsSettings{});
+    Outcome outcome = evaluateGraph(passive, settings);
     ASSERT_EQ(outcome.status, EvalStatus::ok) << "seed " << seed << ": " << outcome.message;
     ++evaluated;
     EXPECT_LT(outcome.measure("distance"), 0.05) << "seed " << seed;
@@ -73,28 +110,30 @@ TEST(Evaluate, PassiveRandomCreaturesStayPut) {
 
 // viability: valid bodies pass, overlapping ones fail with the reason
 TEST(Evaluate, Viability) {
-  Genome pole = readGenomeFile(kCreatures + "pole.genome");
+  Genome pole = creature("pole.genome");
   std::string reason;
-  EXPECT_TRUE(isViable(pole, GenomeLimits{}, PhysicsSettings{}, &reason)) << reason;
+  const CreatureSettings settings;
+  EXPECT_TRUE(isViable(graph::makeGenotype(pole), settings, &reason)) << reason;
   pole.connections.push_back(pole.connections[0]);
-  EXPECT_FALSE(isViable(pole, GenomeLimits{}, PhysicsSettings{}, &reason));
+  EXPECT_FALSE(isViable(graph::makeGenotype(pole), settings, &reason));
   EXPECT_NE(reason.find("self_penetration"), std::string::npos) << reason;
   pole.nodes[0].dimensions.y = -1;
-  EXPECT_FALSE(isViable(pole, GenomeLimits{}, PhysicsSettings{}, &reason));
+  EXPECT_FALSE(isViable(graph::makeGenotype(pole), settings, &reason));
+  EXPECT_NE(reason.find("dimensions"), std::string::npos) << reason;
 }
 
 // the same genome evaluated twice gives bit-identical outcomes
 TEST(Evaluate, DeterministicInOneProcess) {
-  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
-  Outcome a = evaluate(walker, GenomeLimits{}, shortWalk(), PhysicsSettings{});
-  Outcome b = evaluate(walker, GenomeLimits{}, shortWalk(), PhysicsSettings{});
+  Genome walker = creature("walker4.genome");
+  Outcome a = evaluateGraph(walker, shortWalk());
+  Outcome b = evaluateGraph(walker, shortWalk());
   EXPECT_TRUE(bitIdentical(a.fitness, b.fitness));
   EXPECT_EQ(a.measures, b.measures);
   EXPECT_EQ(a.steps, b.steps);
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-    Genome random = randomGenome(GenomeLimits{}, seed);
-    Outcome c = evaluate(random, GenomeLimits{}, shortWalk(), PhysicsSettings{});
-    Outcome d = evaluate(random, GenomeLimits{}, shortWalk(), PhysicsSettings{});
+    Genome random = graph::randomGenome(graph::GenomeLimits{}, seed);
+    Outcome c = evaluateGraph(random, shortWalk());
+    Outcome d = evaluateGraph(random, shortWalk());
     EXPECT_EQ(c.status, d.status);
     EXPECT_TRUE(bitIdentical(c.fitness, d.fitness)) << "seed " << seed;
   }
@@ -102,9 +141,9 @@ TEST(Evaluate, DeterministicInOneProcess) {
 
 // a genome that breaks a rule gets invalid_body and the worst fitness
 TEST(Evaluate, InvalidGenome) {
-  Genome genome = readGenomeFile(kCreatures + "pole.genome");
+  Genome genome = creature("pole.genome");
   genome.nodes[0].dimensions.x = 0;
-  Outcome outcome = evaluate(genome, GenomeLimits{}, shortWalk(), PhysicsSettings{});
+  Outcome outcome = evaluateGraph(genome, shortWalk());
   EXPECT_EQ(outcome.status, EvalStatus::invalid_body);
   EXPECT_EQ(outcome.fitness, kWorstFitness);
   EXPECT_NE(outcome.message.find("dimensions"), std::string::npos) << outcome.message;
@@ -112,21 +151,19 @@ TEST(Evaluate, InvalidGenome) {
 
 // an overlapping body gets self_penetration
 TEST(Evaluate, SelfPenetration) {
-  Genome genome = readGenomeFile(kCreatures + "pole.genome");
+  Genome genome = creature("pole.genome");
   ConnectionGene twin = genome.connections[0];
   genome.connections.push_back(twin);  // a second child on the same spot
-  Outcome outcome = evaluate(genome, GenomeLimits{}, shortWalk(), PhysicsSettings{});
+  Outcome outcome = evaluateGraph(genome, shortWalk());
   EXPECT_EQ(outcome.status, EvalStatus::self_penetration) << outcome.message;
   EXPECT_EQ(outcome.fitness, kWorstFitness);
 }
 
 // absurd explicit torques explode; the monitor catches it
 TEST(Evaluate, Exploded) {
-  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
-  PhysicsSettings physics;
-  physics.actuation = Actuation::torque;
-  physics.strength_per_area = 1e13;
-  Outcome outcome = evaluate(walker, GenomeLimits{}, shortWalk(), physics);
+  Genome walker = creature("walker4.genome");
+  Outcome outcome = evaluateGraph(
+      walker, shortWalk({{"physics.actuation", "torque"}, {"physics.strength_per_area", "1e13"}}));
   // the speed monitor sees it before any state turns non-finite
   EXPECT_EQ(outcome.status, EvalStatus::exploded) << statusName(outcome.status);
   EXPECT_NE(outcome.message.find("physics.max_speed"), std::string::npos) << outcome.message;
@@ -136,13 +173,11 @@ TEST(Evaluate, Exploded) {
 // a state that turns non-finite (here: gravity NaN, which no config allows but the API does not
 // refuse) ends as non_finite, not as exploded, on the first step
 TEST(Evaluate, NonFiniteStateIsCaught) {
-  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
-  PhysicsSettings physics;
-  physics.gravity = std::nan("");
-  for (TaskKind kind : {TaskKind::walk, TaskKind::jump}) {
-    TaskSettings task = shortWalk();
-    task.kind = kind;
-    Outcome outcome = evaluate(walker, GenomeLimits{}, task, physics);
+  Genome walker = creature("walker4.genome");
+  for (const char* task : {"walk", "jump"}) {
+    CreatureSettings settings = shortWalk({{"task.name", task}});
+    settings.physics().gravity = std::nan("");  // past the settings' checks, through the API
+    Outcome outcome = evaluateGraph(walker, settings);
     EXPECT_EQ(outcome.status, EvalStatus::non_finite)
         << statusName(outcome.status) << ": " << outcome.message;
     EXPECT_EQ(outcome.fitness, kWorstFitness);
@@ -155,7 +190,7 @@ TEST(Evaluate, NonFiniteStateIsCaught) {
 class ThrowingObserver : public FrameObserver {
  public:
   std::uint64_t frameStride() const override { return 1; }
-  void begin(const BodyPlan&, const PhysicsSettings&) override {}
+  void begin(const BodyPlan&, double) override {}
   void frame(const EvalFrame& frame) override {
     if (frame.step == 100)
       throw std::runtime_error("observer gave up at step 100");
@@ -165,17 +200,17 @@ class ThrowingObserver : public FrameObserver {
 // an exception inside an evaluation becomes status failed with its message, never a crash:
 // from a frame observer, and from development under a limit it cannot meet
 TEST(Evaluate, ExceptionBecomesFailed) {
-  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
+  Genome walker = creature("walker4.genome");
   ThrowingObserver observer;
-  Outcome thrown = evaluate(walker, GenomeLimits{}, shortWalk(), PhysicsSettings{}, 0, &observer);
+  Outcome thrown = evaluateGraph(walker, shortWalk(), &observer);
   EXPECT_EQ(thrown.status, EvalStatus::failed) << statusName(thrown.status);
   EXPECT_EQ(thrown.fitness, kWorstFitness);
   EXPECT_EQ(thrown.message, "observer gave up at step 100");
   EXPECT_TRUE(thrown.measures.empty());
 
-  GenomeLimits no_parts;
-  no_parts.max_parts = 0;
-  Outcome undeveloped = evaluate(walker, no_parts, shortWalk(), PhysicsSettings{});
+  CreatureSettings no_parts = shortWalk();
+  no_parts.set("genome.max_parts", "0");  // refused by check(), not by the API
+  Outcome undeveloped = evaluateGraph(walker, no_parts);
   EXPECT_EQ(undeveloped.status, EvalStatus::failed)
       << statusName(undeveloped.status) << ": " << undeveloped.message;
   EXPECT_EQ(undeveloped.fitness, kWorstFitness);
@@ -184,20 +219,16 @@ TEST(Evaluate, ExceptionBecomesFailed) {
 
 // the wall-clock bound stops an evaluation with a status
 TEST(Evaluate, Timeout) {
-  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
-  PhysicsSettings physics;
-  physics.max_wall_seconds = 1e-9;
-  Outcome outcome = evaluate(walker, GenomeLimits{}, shortWalk(), physics);
+  Genome walker = creature("walker4.genome");
+  Outcome outcome = evaluateGraph(walker, shortWalk({{"physics.max_wall_seconds", "1e-9"}}));
   EXPECT_EQ(outcome.status, EvalStatus::timeout);
   EXPECT_EQ(outcome.fitness, kWorstFitness);
 }
 
 // jump measures the height of the lowest point; a resting creature scores about zero
 TEST(Evaluate, JumpOfPassiveCreature) {
-  Genome passive = withoutEffectors(readGenomeFile(kCreatures + "walker4.genome"));
-  TaskSettings task = shortWalk();
-  task.kind = TaskKind::jump;
-  Outcome outcome = evaluate(passive, GenomeLimits{}, task, PhysicsSettings{});
+  Genome passive = withoutEffectors(creature("walker4.genome"));
+  Outcome outcome = evaluateGraph(passive, shortWalk({{"task.name", "jump"}}));
   ASSERT_EQ(outcome.status, EvalStatus::ok);
   EXPECT_LT(outcome.measure("height"), 0.01);
 }
@@ -207,7 +238,7 @@ TEST(Evaluate, JumpOfPassiveCreature) {
 class LowestPointRecorder : public FrameObserver {
  public:
   std::uint64_t frameStride() const override { return 1; }
-  void begin(const BodyPlan& plan, const PhysicsSettings&) override { plan_ = &plan; }
+  void begin(const BodyPlan& plan, double) override { plan_ = &plan; }
   void frame(const EvalFrame& frame) override {
     double lowest = INFINITY;
     for (std::size_t i = 0; i < frame.poses.size(); ++i) {
@@ -245,32 +276,28 @@ class LowestPointRecorder : public FrameObserver {
 // walker4's bound takes all four feet off the ground: the jump task's height is clearly positive
 // and is the highest the lowest box corner rose while measured, computed here from the poses
 TEST(Evaluate, JumpHeightOfAHoppingCreature) {
-  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
-  TaskSettings task = shortWalk();
-  task.kind = TaskKind::jump;
+  Genome walker = creature("walker4.genome");
+  CreatureSettings task = shortWalk({{"task.name", "jump"}});
   LowestPointRecorder frames;
-  Outcome outcome = evaluate(walker, GenomeLimits{}, task, PhysicsSettings{}, 0, &frames);
+  Outcome outcome = evaluateGraph(walker, task, &frames);
   ASSERT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
   EXPECT_EQ(frames.frames(EvalPhase::measure),
-            static_cast<std::size_t>(std::llround(task.evaluation_time * 240)));
+            static_cast<std::size_t>(std::llround(task.episode().evaluation_time * 240)));
   const double height = outcome.measure("height");
   EXPECT_EQ(outcome.fitness, height);
   EXPECT_GT(height, 0.02);  // a few centimetres, far above resting contact jitter
   EXPECT_NEAR(height, frames.highestWhileMeasured(), 1e-9);
   // the same body without its drive stays on the ground
-  Outcome passive = evaluate(withoutEffectors(walker), GenomeLimits{}, task, PhysicsSettings{});
+  Outcome passive = evaluateGraph(withoutEffectors(walker), task);
   EXPECT_LT(passive.measure("height"), 0.1 * height);
 }
 
 // the normalisations scale the same distance
 TEST(Evaluate, Normalisations) {
-  Genome walker = readGenomeFile(kCreatures + "walker4.genome");
-  TaskSettings task = shortWalk();
-  Outcome raw = evaluate(walker, GenomeLimits{}, task, PhysicsSettings{});
-  task.normalisation = WalkNormalisation::volume;
-  Outcome by_volume = evaluate(walker, GenomeLimits{}, task, PhysicsSettings{});
-  task.normalisation = WalkNormalisation::chaumont;
-  Outcome by_chaumont = evaluate(walker, GenomeLimits{}, task, PhysicsSettings{});
+  Genome walker = creature("walker4.genome");
+  Outcome raw = evaluateGraph(walker, shortWalk());
+  Outcome by_volume = evaluateGraph(walker, shortWalk({{"task.normalisation", "volume"}}));
+  Outcome by_chaumont = evaluateGraph(walker, shortWalk({{"task.normalisation", "chaumont"}}));
   EXPECT_EQ(raw.measure("distance"), by_volume.measure("distance"));
   EXPECT_NE(raw.fitness, by_volume.fitness);
   EXPECT_NE(raw.fitness, by_chaumont.fitness);
@@ -280,13 +307,11 @@ TEST(Evaluate, Normalisations) {
 // a two-part creature evolved under explicit torques that gains energy from the integrator
 // (a thin plate driven hard through a spherical joint); a saturated motor takes the gain away
 TEST(Evaluate, SaturatedMotorsDenyTheIntegratorExploit) {
-  Genome exploit = readGenomeFile(std::string(CAMBRIAN_SOURCE_DIR) +
-                                  "/tests/tasks/data/integrator_exploit.genome");
-  TaskSettings task;  // the full 10 s walk it was evolved on
-  PhysicsSettings torque;
-  torque.actuation = Actuation::torque;
-  Outcome with_torque = evaluate(exploit, GenomeLimits{}, task, torque);
-  Outcome with_motor = evaluate(exploit, GenomeLimits{}, task, PhysicsSettings{});
+  Genome exploit = graph::graphGenome(readGenomeFile(
+      std::string(CAMBRIAN_SOURCE_DIR) + "/tests/tasks/data/integrator_exploit.genome"));
+  // the full 10 s walk it was evolved on
+  Outcome with_torque = evaluateGraph(exploit, settingsWith({{"physics.actuation", "torque"}}));
+  Outcome with_motor = evaluateGraph(exploit, settingsWith());
   ASSERT_EQ(with_motor.status, EvalStatus::ok) << with_motor.message;
   EXPECT_LT(with_motor.measure("distance"), 1.0);
   // the fixture still is what it claims to be (about 10 m/s under explicit torques)
@@ -297,13 +322,12 @@ TEST(Evaluate, SaturatedMotorsDenyTheIntegratorExploit) {
 // and Bullet's contact correction launches it (about 10 m/s, in the air); without self-contacts
 // (the default) it stays put
 TEST(Evaluate, NoSelfContactsDenyTheContactPump) {
-  Genome exploit = readGenomeFile(std::string(CAMBRIAN_SOURCE_DIR) +
-                                  "/tests/tasks/data/self_contact_exploit.genome");
-  TaskSettings task;  // the full 10 s walk it was evolved on
-  PhysicsSettings self_contacts;
-  self_contacts.self_collision = true;
-  Outcome with_contacts = evaluate(exploit, GenomeLimits{}, task, self_contacts);
-  Outcome without = evaluate(exploit, GenomeLimits{}, task, PhysicsSettings{});
+  Genome exploit = graph::graphGenome(readGenomeFile(
+      std::string(CAMBRIAN_SOURCE_DIR) + "/tests/tasks/data/self_contact_exploit.genome"));
+  // the full 10 s walk it was evolved on
+  Outcome with_contacts =
+      evaluateGraph(exploit, settingsWith({{"physics.self_collision", "true"}}));
+  Outcome without = evaluateGraph(exploit, settingsWith());
   ASSERT_EQ(without.status, EvalStatus::ok) << without.message;
   EXPECT_LT(without.measure("distance"), 1.0);
   // the fixture still is what it claims to be
@@ -315,7 +339,7 @@ TEST(Evaluate, NoSelfContactsDenyTheContactPump) {
 // a pendulum: a heavy 0.6 m arm on a free hinge at the top of a 1 m tower on a wide, heavy
 // base, born horizontal; with the default joint damping it swings for minutes
 Genome pendulum() {
-  return parseGenomeText(R"(cambrian-genome 2
+  return graph::parseGenomeText(R"(cambrian-genome 2
 node 0 size 1.2 1.2 0.1 density 3000 joint rigid
 node 1 size 1.0 0.1 0.1 density 500 joint rigid
 node 2 size 0.6 0.1 0.1 density 3000 joint revolute limit 3.1 3.1 3.1
@@ -323,20 +347,20 @@ connection 0 -> 1 position 0 0 1
 connection 1 -> 2 position 1 0 0 orientation 0 1.5708 0
 end
 )",
-                         "pendulum");
+                                "pendulum");
 }
 
 // the rest check on, with the default threshold, time and cap
-TaskSettings withRestCheck(TaskSettings task) {
-  task.rest_check = true;
-  return task;
+CreatureSettings withRestCheck(CreatureSettings settings) {
+  settings.set("task.rest_check", "true");
+  return settings;
 }
 
 // every frame's phase and part positions (stride 1)
 class PhaseRecorder : public FrameObserver {
  public:
   std::uint64_t frameStride() const override { return 1; }
-  void begin(const BodyPlan&, const PhysicsSettings&) override {}
+  void begin(const BodyPlan&, double) override {}
   void frame(const EvalFrame& frame) override {
     phases.push_back(frame.phase);
     positions.emplace_back();
@@ -360,13 +384,11 @@ class PhaseRecorder : public FrameObserver {
 
 // the rule is off by default, and the default results do not depend on its other settings
 TEST(Evaluate, RestCheckIsOffByDefault) {
-  EXPECT_FALSE(TaskSettings{}.rest_check);
-  Outcome swinging = evaluate(pendulum(), GenomeLimits{}, shortWalk(), PhysicsSettings{});
+  EXPECT_FALSE(CreatureSettings().episode().rest_check);
+  Outcome swinging = evaluateGraph(pendulum(), shortWalk());
   ASSERT_EQ(swinging.status, EvalStatus::ok) << swinging.message;
-  TaskSettings other = shortWalk();
-  other.rest_speed = 1e-9;
-  other.settle_max_time = 0.5;
-  Outcome same = evaluate(pendulum(), GenomeLimits{}, other, PhysicsSettings{});
+  Outcome same = evaluateGraph(
+      pendulum(), shortWalk({{"task.rest_speed", "1e-9"}, {"task.settle_max_time", "0.5"}}));
   EXPECT_TRUE(bitIdentical(same.fitness, swinging.fitness));
   EXPECT_EQ(same.steps, swinging.steps);
 }
@@ -374,50 +396,47 @@ TEST(Evaluate, RestCheckIsOffByDefault) {
 // a block born at rest: with the check on, walk and jump give the same bits and the same
 // steps as without (its settle phases are as long as settle_time and resettle_time)
 TEST(Evaluate, RestCheckLeavesABlockAtRestAlone) {
-  Genome block = readGenomeFile(kCreatures + "single_block.genome");
-  for (TaskKind kind : {TaskKind::walk, TaskKind::jump}) {
-    TaskSettings task = shortWalk();
-    task.kind = kind;
-    Outcome off = evaluate(block, GenomeLimits{}, task, PhysicsSettings{});
-    Outcome on = evaluate(block, GenomeLimits{}, withRestCheck(task), PhysicsSettings{});
+  Genome block = creature("single_block.genome");
+  for (const char* kind : {"walk", "jump"}) {
+    CreatureSettings task = shortWalk({{"task.name", kind}});
+    Outcome off = evaluateGraph(block, task);
+    Outcome on = evaluateGraph(block, withRestCheck(task));
     ASSERT_EQ(on.status, EvalStatus::ok) << on.message;
-    EXPECT_EQ(on.steps, off.steps) << taskName(kind);
+    EXPECT_EQ(on.steps, off.steps) << kind;
     EXPECT_GT(on.steps, 0u);
-    EXPECT_TRUE(bitIdentical(on.fitness, off.fitness)) << taskName(kind);
-    EXPECT_EQ(on.measures, off.measures) << taskName(kind);
+    EXPECT_TRUE(bitIdentical(on.fitness, off.fitness)) << kind;
+    EXPECT_EQ(on.measures, off.measures) << kind;
   }
 }
 
 // a settle phase shorter than rest_time lasts rest_time: the block rests from its first step
 TEST(Evaluate, RestCheckSettleLastsAtLeastTheRestTime) {
-  Genome block = readGenomeFile(kCreatures + "single_block.genome");
-  TaskSettings task = shortWalk();
-  task.kind = TaskKind::jump;
-  task.settle_time = 0.1;
-  PhysicsSettings physics;
-  Outcome off = evaluate(block, GenomeLimits{}, task, physics);
-  Outcome on = evaluate(block, GenomeLimits{}, withRestCheck(task), physics);
+  Genome block = creature("single_block.genome");
+  CreatureSettings task = shortWalk({{"task.name", "jump"}, {"task.settle_time", "0.1"}});
+  const PhysicsSettings physics;
+  Outcome off = evaluateGraph(block, task);
+  Outcome on = evaluateGraph(block, withRestCheck(task));
   ASSERT_EQ(on.status, EvalStatus::ok) << on.message;
   const auto steps = [&](double seconds) {
     return static_cast<std::uint64_t>(std::llround(seconds / physics.time_step));
   };
-  EXPECT_EQ(on.steps - off.steps, steps(task.rest_time) - steps(task.settle_time));
+  EXPECT_EQ(on.steps - off.steps,
+            steps(task.episode().rest_time) - steps(task.episode().settle_time));
 }
 
 // a freely swinging arm never rests: unstable with the worst fitness once settle_max_time has
 // passed in the first settle phase, in walk and jump; without the check it is evaluated
 TEST(Evaluate, RestCheckFindsACreatureThatNeverRests) {
-  for (TaskKind kind : {TaskKind::walk, TaskKind::jump}) {
-    TaskSettings task = shortWalk();
-    task.kind = kind;
-    Outcome off = evaluate(pendulum(), GenomeLimits{}, task, PhysicsSettings{});
+  for (const char* kind : {"walk", "jump"}) {
+    CreatureSettings task = shortWalk({{"task.name", kind}});
+    Outcome off = evaluateGraph(pendulum(), task);
     ASSERT_EQ(off.status, EvalStatus::ok) << off.message;
-    Outcome on = evaluate(pendulum(), GenomeLimits{}, withRestCheck(task), PhysicsSettings{});
-    EXPECT_EQ(on.status, EvalStatus::unstable) << taskName(kind) << ": " << on.message;
+    Outcome on = evaluateGraph(pendulum(), withRestCheck(task));
+    EXPECT_EQ(on.status, EvalStatus::unstable) << kind << ": " << on.message;
     EXPECT_EQ(on.fitness, kWorstFitness);
     EXPECT_TRUE(on.measures.empty());
-    EXPECT_EQ(on.steps, static_cast<std::uint64_t>(
-                            std::llround(task.settle_max_time / PhysicsSettings{}.time_step)));
+    EXPECT_EQ(on.steps, static_cast<std::uint64_t>(std::llround(task.episode().settle_max_time /
+                                                                PhysicsSettings{}.time_step)));
     EXPECT_NE(on.message.find("task.settle_max_time"), std::string::npos) << on.message;
     EXPECT_NE(on.message.find("settle phase"), std::string::npos) << on.message;
   }
@@ -427,15 +446,14 @@ TEST(Evaluate, RestCheckFindsACreatureThatNeverRests) {
 // past its minimum, that closes rest_time of steps in which no part moved faster than
 // rest_speed (checked on the recorded frames), and the run is deterministic
 TEST(Evaluate, RestCheckSettlesUntilAtRest) {
-  PhysicsSettings physics;
-  physics.joint_damping = 5;
-  const double dt = physics.time_step;
-  const TaskSettings task = withRestCheck(shortWalk());
+  const CreatureSettings settings = withRestCheck(shortWalk({{"physics.joint_damping", "5"}}));
+  const double dt = settings.physics().time_step;
+  const EpisodeSettings& task = settings.episode();
   const std::uint64_t rest_steps = std::llround(task.rest_time / dt);
   PhaseRecorder frames;
-  Outcome on = evaluate(pendulum(), GenomeLimits{}, task, physics, 0, &frames);
+  Outcome on = evaluateGraph(pendulum(), settings, &frames);
   ASSERT_EQ(on.status, EvalStatus::ok) << on.message;
-  Outcome again = evaluate(pendulum(), GenomeLimits{}, task, physics);
+  Outcome again = evaluateGraph(pendulum(), settings);
   EXPECT_EQ(again.steps, on.steps);
   EXPECT_TRUE(bitIdentical(again.fitness, on.fitness));
   ASSERT_EQ(frames.phases.size(), on.steps + 1);
@@ -463,9 +481,9 @@ TEST(Evaluate, RestCheckSettlesUntilAtRest) {
   }
 
   // the check off: settle phases of exactly settle_time and resettle_time
-  TaskSettings off_task = task;
-  off_task.rest_check = false;
-  Outcome off = evaluate(pendulum(), GenomeLimits{}, off_task, physics);
+  CreatureSettings off_task = settings;
+  off_task.set("task.rest_check", "false");
+  Outcome off = evaluateGraph(pendulum(), off_task);
   ASSERT_EQ(off.status, EvalStatus::ok) << off.message;
   EXPECT_EQ(on.steps - off.steps, settle + resettle - std::llround(task.settle_time / dt) -
                                       std::llround(task.resettle_time / dt));

@@ -1,3 +1,4 @@
+// Tests of the juries and the walk normalisations.
 #include "tasks/juries.hpp"
 
 #include <gtest/gtest.h>
@@ -46,12 +47,21 @@ TEST(Juries, BodyLength) {
   EXPECT_NEAR(bodyLength(plan), 0.8, 1e-12);
 }
 
+// a simulation of `plan` without a controller on the plane, born `height` above it
+struct Sim {
+  Environment environment;
+  Simulation simulation;
+  Sim(const BodyPlan& plan, double height)
+      : simulation(plan, nullptr, environment, PhysicsSettings{}, height) {}
+};
+
 // the height jury keeps the highest the lowest point has been since begin(): a block born
 // 0.3 m above the ground scores 0.3 m though it then falls and lands
 TEST(Juries, HeightKeepsTheHighestLowestPoint) {
   BodyPlan plan = boxes({{0.2, 0.2, 0.2}});
   plan.sensors.push_back({SensorKind::contact, 0, 0});
-  Simulation simulation(plan, PhysicsSettings{}, {10, 0, 0}, 0.3);
+  Sim sim(plan, 0.3);
+  Simulation& simulation = sim.simulation;
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
   HeightJury height;
   height.begin(simulation);
@@ -69,7 +79,8 @@ TEST(Juries, HeightKeepsTheHighestLowestPoint) {
 // observed from the moment it lands is at about 0 m, so a jury begun later scores about 0
 TEST(Juries, HeightCountsFromBegin) {
   BodyPlan plan = boxes({{0.2, 0.2, 0.2}});
-  Simulation simulation(plan, PhysicsSettings{}, {10, 0, 0}, 0.3);
+  Sim sim(plan, 0.3);
+  Simulation& simulation = sim.simulation;
   for (int s = 0; s < 240; ++s)
     simulation.step(false);
   HeightJury height;
@@ -80,6 +91,21 @@ TEST(Juries, HeightCountsFromBegin) {
   }
   EXPECT_LT(height.value(simulation), 0.005);
   EXPECT_GE(height.value(simulation), 0.0);
+}
+
+// the distance jury measures the centre of mass's horizontal travel from begin()
+TEST(Juries, DistanceIsHorizontalTravelFromBegin) {
+  BodyPlan plan = boxes({{0.2, 0.2, 0.2}});
+  Sim sim(plan, 0.3);
+  DistanceJury distance;
+  distance.begin(sim.simulation);
+  for (int s = 0; s < 240; ++s) {
+    sim.simulation.step(false);
+    distance.observe(sim.simulation);
+  }
+  // it fell 0.3 m straight down: no horizontal travel (contact jitter aside)
+  EXPECT_LT(distance.value(sim.simulation), 1e-3);
+  EXPECT_STREQ(distance.name(), "distance");
 }
 
 }  // namespace

@@ -1,15 +1,22 @@
+// Tests of the synthetic task: its fitness from the genome's sizes, its cost laws, the work it
+// really does.
 #include "tasks/synthetic.hpp"
 
 #include "cambrian/rng.hpp"
 
+#include "encodings/directed_graph/encoding.hpp"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <vector>
 
 namespace cambrian {
 namespace {
+
+using graph::Genome;
 
 // a small genome with known sizes
 Genome twoNodes() {
@@ -20,6 +27,24 @@ Genome twoNodes() {
   genome.connections.resize(1);
   genome.connections[0].to = 1;
   return genome;
+}
+
+// the sizes of a directed-graph genome, as the encoding reports them
+GenomeSize sizeOf(const Genome& genome) {
+  return graph::DirectedGraphEncoding().size(graph::makeGenotype(genome));
+}
+
+double syntheticFitness(const Genome& genome) {
+  return SyntheticTask::fitness(sizeOf(genome));
+}
+
+double syntheticCostMicroseconds(const Genome& genome, const SyntheticTask& task,
+                                 std::uint64_t seed) {
+  return task.costMicroseconds(sizeOf(genome), seed);
+}
+
+Outcome evaluateSynthetic(const Genome& genome, const SyntheticTask& task, std::uint64_t seed) {
+  return task.evaluateGenome(graph::makeGenotype(genome), graph::DirectedGraphEncoding(), seed);
 }
 
 TEST(SyntheticTask, FitnessIsMeanSidePerNodePlusConnectionBonus) {
@@ -34,10 +59,10 @@ TEST(SyntheticTask, BiggerBoxesScoreHigher) {
 }
 
 TEST(SyntheticTask, CostIsDeterministicAndWithinTheNoiseBand) {
-  TaskSettings task;
-  task.synthetic_cost_us = 1000;
-  task.synthetic_cost_per_gene_us = 100;
-  task.synthetic_noise = 0.5;
+  SyntheticTask task;
+  task.cost_us = 1000;
+  task.cost_per_gene_us = 100;
+  task.noise = 0.5;
   Genome genome = twoNodes();
   bool differs = false;
   double first = syntheticCostMicroseconds(genome, task, 0);
@@ -49,7 +74,7 @@ TEST(SyntheticTask, CostIsDeterministicAndWithinTheNoiseBand) {
     differs = differs || cost != first;
   }
   EXPECT_TRUE(differs);
-  task.synthetic_noise = 0;
+  task.noise = 0;
   EXPECT_EQ(syntheticCostMicroseconds(genome, task, 3), 1200.0);
 }
 
@@ -69,7 +94,7 @@ Moments momentsOf(const std::vector<double>& xs) {
 }
 
 // the costs of `genome` under `task` for eval seeds 0..n-1
-std::vector<double> costs(const Genome& genome, const TaskSettings& task, std::uint64_t n) {
+std::vector<double> costs(const Genome& genome, const SyntheticTask& task, std::uint64_t n) {
   std::vector<double> xs;
   for (std::uint64_t seed = 0; seed < n; ++seed)
     xs.push_back(syntheticCostMicroseconds(genome, task, seed));
@@ -77,11 +102,11 @@ std::vector<double> costs(const Genome& genome, const TaskSettings& task, std::u
 }
 
 TEST(SyntheticTask, UniformIsTheDefaultAndKeepsItsFormula) {
-  TaskSettings task;
-  EXPECT_EQ(task.synthetic_distribution, SyntheticDistribution::uniform);
-  task.synthetic_cost_us = 1000;
-  task.synthetic_cost_per_gene_us = 100;
-  task.synthetic_noise = 0.4;
+  SyntheticTask task;
+  EXPECT_EQ(task.distribution, SyntheticDistribution::uniform);
+  task.cost_us = 1000;
+  task.cost_per_gene_us = 100;
+  task.noise = 0.4;
   // bit for bit the first uniform of the creature's evaluation stream, as before
   for (std::uint64_t seed : {0ull, 1ull, 77ull, 123456789ull}) {
     Rng rng(seed, RngPurpose::evaluation);
@@ -91,13 +116,13 @@ TEST(SyntheticTask, UniformIsTheDefaultAndKeepsItsFormula) {
 }
 
 TEST(SyntheticTask, LognormalHasTheMeanCostAndTheCoefficientOfVariation) {
-  TaskSettings task;
-  task.synthetic_distribution = SyntheticDistribution::lognormal;
-  task.synthetic_cost_us = 1000;
-  task.synthetic_cost_per_gene_us = 100;
-  task.synthetic_noise = 0.9;  // ignored by lognormal
+  SyntheticTask task;
+  task.distribution = SyntheticDistribution::lognormal;
+  task.cost_us = 1000;
+  task.cost_per_gene_us = 100;
+  task.noise = 0.9;  // ignored by lognormal
   for (double cv : {0.25, 0.5, 1.5}) {
-    task.synthetic_cv = cv;
+    task.cv = cv;
     std::vector<double> xs = costs(twoNodes(), task, 40000);
     Moments m = momentsOf(xs);
     // sample mean and CV near the settings (4 standard errors of the mean; the CV's error
@@ -119,12 +144,12 @@ TEST(SyntheticTask, LognormalHasTheMeanCostAndTheCoefficientOfVariation) {
 }
 
 TEST(SyntheticTask, EveryDistributionIsDeterministicPerSeed) {
-  TaskSettings task;
-  task.synthetic_cost_us = 500;
-  task.synthetic_noise = 0.3;
+  SyntheticTask task;
+  task.cost_us = 500;
+  task.noise = 0.3;
   for (SyntheticDistribution d : {SyntheticDistribution::uniform, SyntheticDistribution::lognormal,
                                   SyntheticDistribution::fixed}) {
-    task.synthetic_distribution = d;
+    task.distribution = d;
     // the same seed twice gives the same bits
     std::vector<double> a = costs(twoNodes(), task, 200), b = costs(twoNodes(), task, 200);
     EXPECT_EQ(a, b);
@@ -133,35 +158,34 @@ TEST(SyntheticTask, EveryDistributionIsDeterministicPerSeed) {
     EXPECT_EQ(outcome.measure("cost_us"), syntheticCostMicroseconds(twoNodes(), task, 17));
   }
   // different seeds differ where the law has a spread
-  task.synthetic_distribution = SyntheticDistribution::lognormal;
+  task.distribution = SyntheticDistribution::lognormal;
   std::vector<double> xs = costs(twoNodes(), task, 50);
   EXPECT_NE(momentsOf(xs).sd, 0);
 }
 
 TEST(SyntheticTask, FixedHasNoSpread) {
-  TaskSettings task;
-  task.synthetic_distribution = SyntheticDistribution::fixed;
-  task.synthetic_cost_us = 1000;
-  task.synthetic_cost_per_gene_us = 100;
-  task.synthetic_noise = 0.5;  // ignored by fixed
-  task.synthetic_cv = 2;       // ignored by fixed
+  SyntheticTask task;
+  task.distribution = SyntheticDistribution::fixed;
+  task.cost_us = 1000;
+  task.cost_per_gene_us = 100;
+  task.noise = 0.5;  // ignored by fixed
+  task.cv = 2;       // ignored by fixed
   for (double x : costs(twoNodes(), task, 500))
     EXPECT_EQ(x, 1200.0);
 }
 
 TEST(SyntheticTask, LognormalWithoutVariationIsTheMeanCost) {
-  TaskSettings task;
-  task.synthetic_distribution = SyntheticDistribution::lognormal;
-  task.synthetic_cost_us = 800;
-  task.synthetic_cv = 0;
+  SyntheticTask task;
+  task.distribution = SyntheticDistribution::lognormal;
+  task.cost_us = 800;
+  task.cv = 0;
   for (double x : costs(twoNodes(), task, 100))
     EXPECT_EQ(x, 800.0);
 }
 
 TEST(SyntheticTask, SpendsAtLeastItsCostAndReportsIt) {
-  TaskSettings task;
-  task.kind = TaskKind::synthetic;
-  task.synthetic_cost_us = 3000;
+  SyntheticTask task;
+  task.cost_us = 3000;
   auto start = std::chrono::steady_clock::now();
   Outcome outcome = evaluateSynthetic(twoNodes(), task, 1);
   double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -173,15 +197,29 @@ TEST(SyntheticTask, SpendsAtLeastItsCostAndReportsIt) {
 }
 
 TEST(SyntheticTask, OutcomeApartFromWallTimeIsDeterministic) {
-  TaskSettings task;
-  task.kind = TaskKind::synthetic;
-  task.synthetic_cost_us = 200;
-  task.synthetic_noise = 0.3;
+  SyntheticTask task;
+  task.cost_us = 200;
+  task.noise = 0.3;
   Outcome a = evaluateSynthetic(twoNodes(), task, 9), b = evaluateSynthetic(twoNodes(), task, 9);
   EXPECT_EQ(a.fitness, b.fitness);
   EXPECT_EQ(a.measures, b.measures);
   EXPECT_EQ(a.steps, b.steps);
   EXPECT_EQ(a.parts, 2);
+}
+
+// the task declares its measures and needs no body
+TEST(SyntheticTask, DeclaresItsMeasures) {
+  SyntheticTask task;
+  EXPECT_FALSE(task.needsBody());
+  std::vector<MeasureInfo> measures = task.measures();
+  ASSERT_EQ(measures.size(), 2u);
+  EXPECT_EQ(measures[0].name, "cost_us");
+  EXPECT_EQ(measures[1].name, "nodes");
+  Outcome outcome = evaluateSynthetic(twoNodes(), task, 3);
+  for (const Measure& measure : outcome.measures)
+    EXPECT_NE(std::find(measures.begin(), measures.end(),
+                        MeasureInfo{measure.name, measure.name == "cost_us" ? "us" : "1"}),
+              measures.end());
 }
 
 }  // namespace

@@ -3,8 +3,11 @@
 // sensors, neurons and effectors wired as Sims describes. See docs/development-and-brain.md.
 #include "cambrian/body_plan.hpp"
 #include "cambrian/error.hpp"
-#include "cambrian/genome.hpp"
 #include "cambrian/math.hpp"
+
+#include "brain/controller_sum.hpp"
+#include "brain/sine_oscillators.hpp"
+#include "encodings/directed_graph/genome.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace cambrian {
+namespace cambrian::graph {
 namespace {
 
 // a reflection bit whose position component is smaller than this makes no copy
@@ -122,8 +125,10 @@ class Embryo {
     PartPlan root;
     root.node = 0;
     root.size = partSize(genome_.nodes[0], 1.0, limits_);
+    root.shape = genome_.nodes[0].shape;
     root.mass = genome_.nodes[0].density * root.size.x * root.size.y * root.size.z;
-    root.joint = JointType::rigid;
+    root.material.density = genome_.nodes[0].density;
+    root.joint = JointType::fixed;
     root.axes = jointAxes(false);
     plan.parts.push_back(root);
     Instance root_instance;
@@ -234,7 +239,9 @@ class Embryo {
     part.connection = c;
     part.depth = up.depth + 1;
     part.size = partSize(node, instance.scale, limits_);
+    part.shape = node.shape;
     part.mass = node.density * part.size.x * part.size.y * part.size.z;
+    part.material.density = node.density;
     part.joint = node.joint_type;
     part.pivot_in_parent = hadamard(p, up.size * 0.5);
     part.pivot_in_child = Vec3{-part.size.x * 0.5, 0, 0};
@@ -364,7 +371,7 @@ class Wiring {
     if (count <= 0) {
       return Wire{};
     }
-    return Wire{plan_.neuronSignal(first + input.index % count), input.weight};
+    return Wire{static_cast<int>(plan_.sensors.size()) + first + input.index % count, input.weight};
   }
 
   const Genome& genome_;
@@ -395,9 +402,12 @@ void wireNeuron(NeuronPlan& neuron, const NeuronGene& gene, Resolve resolve) {
 
 }  // namespace
 
-BodyPlan develop(const Genome& genome, const GenomeLimits& limits) {
+Creature develop(const Genome& genome, const GenomeLimits& limits) {
   checkGenome(genome, limits);
-  BodyPlan plan;
+  Creature creature;
+  BodyPlan& plan = creature.body;
+  auto network = std::make_shared<NeuralNetworkPlan>();
+  std::vector<NeuronPlan>& neurons = network->neurons;
 
   // parts and joints
   Embryo embryo(genome, limits);
@@ -426,16 +436,16 @@ BodyPlan develop(const Genome& genome, const GenomeLimits& limits) {
   ranges.neuron_count.resize(part_count);
   for (int i = 0; i < part_count; ++i) {
     const PartGene& node = genome.nodes[plan.parts[i].node];
-    ranges.neuron_first[i] = static_cast<int>(plan.neurons.size());
+    ranges.neuron_first[i] = static_cast<int>(neurons.size());
     ranges.neuron_count[i] = static_cast<int>(node.neurons.size());
     for (const NeuronGene& gene : node.neurons) {
-      plan.neurons.push_back(neuronFrom(gene, i));
+      neurons.push_back(neuronFrom(gene, i));
     }
   }
-  ranges.brain_first = static_cast<int>(plan.neurons.size());
+  ranges.brain_first = static_cast<int>(neurons.size());
   ranges.brain_count = static_cast<int>(genome.brain.size());
   for (const NeuronGene& gene : genome.brain) {
-    plan.neurons.push_back(neuronFrom(gene, -1));
+    neurons.push_back(neuronFrom(gene, -1));
   }
 
   // wiring of the neurons
@@ -443,31 +453,46 @@ BodyPlan develop(const Genome& genome, const GenomeLimits& limits) {
   for (int i = 0; i < part_count; ++i) {
     const PartGene& node = genome.nodes[plan.parts[i].node];
     for (int n = 0; n < ranges.neuron_count[i]; ++n) {
-      wireNeuron(plan.neurons[ranges.neuron_first[i] + n], node.neurons[n],
+      wireNeuron(neurons[ranges.neuron_first[i] + n], node.neurons[n],
                  [&](const NeuronInput& input) { return wiring.partInput(input, i); });
     }
   }
   for (int n = 0; n < ranges.brain_count; ++n) {
-    wireNeuron(plan.neurons[ranges.brain_first + n], genome.brain[n],
+    wireNeuron(neurons[ranges.brain_first + n], genome.brain[n],
                [&](const NeuronInput& input) { return wiring.brainInput(input); });
   }
 
-  // effectors: one per driven degree of freedom of each non-root joint
+  // effectors: one per driven degree of freedom of each non-root joint, each with its wire and
+  // the oscillator of the connection that made the part
+  std::vector<SineOscillator> oscillators;
+  bool any_oscillator = false;
   for (int i = 1; i < part_count; ++i) {
     const PartPlan& part = plan.parts[i];
     const PartGene& node = genome.nodes[part.node];
     const int driven =
         std::min(degreesOfFreedom(part.joint), static_cast<int>(node.effectors.size()));
     for (int d = 0; d < driven; ++d) {
-      EffectorPlan effector;
-      effector.part = i;
-      effector.dof = d;
-      effector.input = wiring.partInput(node.effectors[d].input, i);
-      effector.oscillator = genome.connections[part.connection].controller;
-      plan.effectors.push_back(effector);
+      plan.effectors.push_back(EffectorPlan{i, d});
+      network->effector_inputs.push_back(wiring.partInput(node.effectors[d].input, i));
+      const JointControllerGene& gene = genome.connections[part.connection].controller;
+      oscillators.push_back(
+          SineOscillator{gene.enabled, gene.amplitude, gene.frequency, gene.phase, gene.offset});
+      any_oscillator = any_oscillator || gene.enabled;
     }
   }
-  return plan;
+
+  // the network drives the effectors; the joint oscillators, when any is on, add to it
+  network->sensor_count = plan.sensors.size();
+  if (!any_oscillator) {
+    creature.controller = std::move(network);
+    return creature;
+  }
+  auto sine = std::make_shared<SineOscillatorsPlan>();
+  sine->oscillators = std::move(oscillators);
+  auto sum = std::make_shared<ControllerSumPlan>();
+  sum->parts = {std::move(network), std::move(sine)};
+  creature.controller = std::move(sum);
+  return creature;
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

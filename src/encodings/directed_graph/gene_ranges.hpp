@@ -2,12 +2,13 @@
 // generation, validation, repair and mutation so that they always agree.
 #pragma once
 
-#include "cambrian/genome.hpp"
 #include "cambrian/math.hpp"
+
+#include "encodings/directed_graph/genome.hpp"
 
 #include <cstdint>
 
-namespace cambrian {
+namespace cambrian::graph {
 
 /// Connection.position components lie in [-kPositionBound, kPositionBound].
 constexpr double kPositionBound = 1.0;
@@ -46,4 +47,4 @@ inline double clampToRange(double v, double lo, double hi) {
   return v;
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

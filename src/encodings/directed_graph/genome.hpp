@@ -1,63 +1,24 @@
-// cambrian: the Sims / Minemonics directed-graph genome.
+// cambrian: the Sims / Minemonics directed-graph genome, the first encoding.
 //
-// Nodes are classes of body parts, connections are classes of joints. Development
-// (develop/) walks the graph from the root node to make a BodyPlan. See docs/genome.md.
+// Nodes are classes of body parts, connections are classes of joints. Development (develop.cpp)
+// walks the graph from the root node to make a BodyPlan and the controller that drives it. See
+// docs/genome.md.
 #pragma once
 
+#include "cambrian/body_plan.hpp"
+#include "cambrian/encoding.hpp"
 #include "cambrian/math.hpp"
 
+#include "brain/neural_network.hpp"
+
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace cambrian {
+namespace cambrian::graph {
 
 //---------------------------------------------------------------- enumerations
-
-/// How a part is jointed to its parent; the number of degrees of freedom follows.
-enum class JointType : std::uint8_t { rigid = 0, revolute = 1, universal = 2, spherical = 3 };
-
-/// Degrees of freedom of a joint type: 0, 1, 2 or 3.
-inline int degreesOfFreedom(JointType type) {
-  return static_cast<int>(type);
-}
-
-/// Part shapes. Boxes only for now; the enum keeps the format open.
-enum class PartShape : std::uint8_t { box = 0 };
-
-/// Neuron functions: Sims (1994) set plus constant. Arity is neuronArity().
-enum class NeuronFunction : std::uint8_t {
-  constant = 0,
-  sum,
-  product,
-  divide,
-  sum_threshold,
-  greater_than,
-  sign_of,
-  min,
-  max,
-  abs,
-  if_positive,  ///< Sims' "if": input 0 > 0 ? input 1 : input 2
-  interpolate,
-  sin,
-  cos,
-  atan,
-  log,
-  expt,
-  sigmoid,
-  integrate,
-  differentiate,
-  smooth,
-  memory,
-  oscillate_wave,
-  oscillate_saw,
-  count_  ///< number of functions; not a function
-};
-
-/// Number of inputs a neuron function reads (0..3).
-int neuronArity(NeuronFunction function);
-/// Lower-case name used by the text form ("sum_threshold", "oscillate_wave", ...).
-const char* neuronFunctionName(NeuronFunction function);
 
 /// Where a neuron or effector input reads its signal from.
 enum class SignalSource : std::uint8_t {
@@ -172,6 +133,9 @@ void validateGenome(const Genome& genome, const GenomeLimits& limits);
 /// Current version of the byte format. Readers accept this and older versions.
 constexpr std::uint32_t kGenomeFormatVersion = 1;
 
+/// The tag that starts the byte form.
+constexpr std::array<char, 4> kGenomeTag = {'C', 'M', 'B', 'G'};
+
 /// Versioned little-endian byte serialization (what MPI messages and HDF5 files carry).
 std::vector<std::uint8_t> serializeGenome(const Genome& genome);
 /// Inverse of serializeGenome; throws InputError naming the field on truncated or bad bytes.
@@ -188,9 +152,14 @@ std::string genomeToText(const Genome& genome);
 /// field, and for a version-2 text without its final `end`, that it may be truncated.
 Genome parseGenomeText(const std::string& text, const std::string& source = "<text>");
 
-/// Reads a genome file, text or binary (detected by the magic bytes); errors name the file.
-Genome readGenomeFile(const std::string& path);
-/// Writes the text form atomically (temporary file, rename).
-void writeGenomeFile(const std::string& path, const Genome& genome);
+/// Develops a genome (embryogenesis): walks the graph from node 0 with recursive limits,
+/// reflections and scaling; instantiates sensors, neurons and effectors and wires them as
+/// Sims describes. Deterministic. Sizes are clamped to limits; development stops at
+/// limits.max_parts parts (breadth-first), setting `truncated`. The controller is the nested
+/// network, plus the joint oscillators when any connection enables one.
+Creature develop(const Genome& genome, const GenomeLimits& limits);
 
-}  // namespace cambrian
+/// The directed-graph genome held by a genotype (GenomeError when it is of another encoding).
+const Genome& graphGenome(const Genotype& genotype);
+
+}  // namespace cambrian::graph

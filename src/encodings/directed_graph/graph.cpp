@@ -1,11 +1,11 @@
 // cambrian: reachability, node removal and garbage collection of the genome graph.
-#include "graph.hpp"
+#include "encodings/directed_graph/graph.hpp"
 
-#include "cambrian/operators.hpp"
+#include "encodings/directed_graph/operators.hpp"
 
 #include <cstdint>
 
-namespace cambrian {
+namespace cambrian::graph {
 
 std::vector<bool> reachableNodes(const Genome& genome) {
   std::size_t n = genome.nodes.size();
@@ -61,4 +61,4 @@ Genome removeUnreachableNodes(const Genome& genome) {
   return result;
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

@@ -1,11 +1,11 @@
 // cambrian: graph edits on a genome (reachability from the root, node removal with renumbering).
 #pragma once
 
-#include "cambrian/genome.hpp"
+#include "encodings/directed_graph/genome.hpp"
 
 #include <vector>
 
-namespace cambrian {
+namespace cambrian::graph {
 
 /// reachable[i] is true when node i can be reached from node 0 along connections (node 0
 /// itself included when the genome has nodes). Connections with out-of-range ends are ignored.
@@ -16,4 +16,4 @@ std::vector<bool> reachableNodes(const Genome& genome);
 /// node count.
 void removeNodes(Genome& genome, const std::vector<bool>& keep);
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

@@ -1,15 +1,15 @@
 // cambrian: Sims' genetic operators on the directed-graph genome: mutation, crossover, grafting.
-#include "cambrian/operators.hpp"
+#include "encodings/directed_graph/operators.hpp"
 
-#include "gene_ranges.hpp"
-#include "graph.hpp"
-#include "random.hpp"
-#include "repair.hpp"
+#include "encodings/directed_graph/gene_ranges.hpp"
+#include "encodings/directed_graph/graph.hpp"
+#include "encodings/directed_graph/random.hpp"
+#include "encodings/directed_graph/repair.hpp"
 
 #include <algorithm>
 #include <cstdint>
 
-namespace cambrian {
+namespace cambrian::graph {
 namespace {
 
 // per-parameter perturbation, scaled to each parameter's range (Sims 1994)
@@ -292,4 +292,4 @@ Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& 
   return g;
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

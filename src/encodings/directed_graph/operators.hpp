@@ -1,10 +1,11 @@
 // cambrian: genetic operators on the directed-graph genome (Sims 1994, Chaumont et al. 2007).
 #pragma once
 
-#include "cambrian/genome.hpp"
 #include "cambrian/rng.hpp"
 
-namespace cambrian {
+#include "encodings/directed_graph/genome.hpp"
+
+namespace cambrian::graph {
 
 /// How mutation behaves. Rates are per mutable parameter or per structural opportunity.
 struct MutationSettings {
@@ -37,4 +38,4 @@ Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& 
 /// Removes nodes unreachable from the root, renumbering connections.
 Genome removeUnreachableNodes(const Genome& genome);
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

@@ -1,14 +1,13 @@
 // cambrian: random genomes (the first generation) and the random genes they are made of.
-#include "random.hpp"
+#include "encodings/directed_graph/random.hpp"
 
-#include "cambrian/genome.hpp"
-
-#include "gene_ranges.hpp"
-#include "repair.hpp"
+#include "encodings/directed_graph/gene_ranges.hpp"
+#include "encodings/directed_graph/genome.hpp"
+#include "encodings/directed_graph/repair.hpp"
 
 #include <algorithm>
 
-namespace cambrian {
+namespace cambrian::graph {
 namespace {
 
 // uniform in a preferred sub-range [lo, hi] intersected with the allowed range [min, max]
@@ -172,4 +171,4 @@ Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_
   return genome;
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

@@ -1,10 +1,11 @@
 // cambrian: random genes, shared by randomGenome and the mutation operators.
 #pragma once
 
-#include "cambrian/genome.hpp"
 #include "cambrian/rng.hpp"
 
-namespace cambrian {
+#include "encodings/directed_graph/genome.hpp"
+
+namespace cambrian::graph {
 
 /// A random input wire: any source, small slot and index, |weight| <= min(2, max_weight).
 NeuronInput randomNeuronInput(const GenomeLimits& limits, Rng& rng);
@@ -21,4 +22,4 @@ PartGene randomPartGene(const GenomeLimits& limits, Rng& rng);
 ConnectionGene randomConnectionGene(std::uint16_t from, std::uint16_t to,
                                     const GenomeLimits& limits, Rng& rng);
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

@@ -1,13 +1,13 @@
 // cambrian: truncation and clamping that make any genome valid under GenomeLimits.
-#include "repair.hpp"
+#include "encodings/directed_graph/repair.hpp"
 
-#include "gene_ranges.hpp"
-#include "graph.hpp"
+#include "encodings/directed_graph/gene_ranges.hpp"
+#include "encodings/directed_graph/graph.hpp"
 
 #include <algorithm>
 #include <cstdint>
 
-namespace cambrian {
+namespace cambrian::graph {
 namespace {
 
 // an enumeration's raw value taken modulo its number of values
@@ -95,4 +95,4 @@ void fitToLimits(Genome& genome, const GenomeLimits& limits) {
   fitNeurons(genome.brain, limits.max_brain_neurons, limits);
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

@@ -1,9 +1,9 @@
 // cambrian: bringing any genome within GenomeLimits (the last step of every operator).
 #pragma once
 
-#include "cambrian/genome.hpp"
+#include "encodings/directed_graph/genome.hpp"
 
-namespace cambrian {
+namespace cambrian::graph {
 
 /// Makes `genome` pass validateGenome(genome, limits) while changing as little as possible:
 /// adds a default root if there are no nodes; truncates nodes, connections, brain neurons,
@@ -13,4 +13,4 @@ namespace cambrian {
 /// left unchanged.
 void fitToLimits(Genome& genome, const GenomeLimits& limits);
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

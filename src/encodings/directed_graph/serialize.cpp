@@ -1,15 +1,15 @@
 // cambrian: the versioned little-endian byte form of a genome ("CMBG", version, counts, fields).
 #include "cambrian/error.hpp"
-#include "cambrian/genome.hpp"
+
+#include "core/bytes.hpp"
+#include "encodings/directed_graph/genome.hpp"
 
 #include <bit>
 #include <cstring>
 #include <string>
 
-namespace cambrian {
+namespace cambrian::graph {
 namespace {
-
-constexpr char kMagic[4] = {'C', 'M', 'B', 'G'};
 
 // smallest encoded sizes, used to reject counts the remaining bytes cannot hold
 constexpr std::size_t kInputBytes = 1 + 2 + 2 + 8;
@@ -18,96 +18,8 @@ constexpr std::size_t kEffectorBytes = kInputBytes;
 constexpr std::size_t kNodeBytes = 1 + 24 + 8 + 1 + 24 + 1 + 4 + 4;
 constexpr std::size_t kConnectionBytes = 2 + 2 + 24 + 24 + 8 + 1 + 1 + 1 + 32;
 
-// appends little-endian values to a byte vector
-class Writer {
- public:
-  explicit Writer(std::vector<std::uint8_t>& out) : out_(out) {}
-  void u8(std::uint8_t v) { out_.push_back(v); }
-  void u16(std::uint16_t v) { unsigned_le(v, 2); }
-  void u32(std::uint32_t v) { unsigned_le(v, 4); }
-  void f64(double v) { unsigned_le(std::bit_cast<std::uint64_t>(v), 8); }
-  void vec3(const Vec3& v) {
-    f64(v.x);
-    f64(v.y);
-    f64(v.z);
-  }
-  void count(std::size_t n) { u32(static_cast<std::uint32_t>(n)); }
-
- private:
-  void unsigned_le(std::uint64_t v, int bytes) {
-    for (int i = 0; i < bytes; ++i)
-      out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-  }
-  std::vector<std::uint8_t>& out_;
-};
-
-// reads little-endian values with bounds checks; errors name the current field and offset
-class Reader {
- public:
-  Reader(const std::uint8_t* bytes, std::size_t size) : bytes_(bytes), size_(size) {}
-
-  /// What is being read, for messages ("node 2 neurons").
-  void context(std::string what) { context_ = std::move(what); }
-  std::size_t remaining() const { return size_ - offset_; }
-
-  std::uint8_t u8() { return static_cast<std::uint8_t>(unsignedLe(1)); }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(unsignedLe(2)); }
-  std::uint32_t u32() { return static_cast<std::uint32_t>(unsignedLe(4)); }
-  double f64() { return std::bit_cast<double>(unsignedLe(8)); }
-  Vec3 vec3() {
-    Vec3 v;
-    v.x = f64();
-    v.y = f64();
-    v.z = f64();
-    return v;
-  }
-  bool flag(const char* field) {
-    std::size_t at = offset_;
-    std::uint8_t v = u8();
-    if (v > 1) {
-      throw InputError("genome bytes: " + context_ + " " + field + " is " + std::to_string(v) +
-                       ", expected 0 or 1 (offset " + std::to_string(at) + " of " +
-                       std::to_string(size_) + ")");
-    }
-    return v == 1;
-  }
-  // a count whose elements (each at least `element_bytes`) must fit in the remaining bytes
-  std::size_t count(std::size_t element_bytes) {
-    std::size_t at = offset_;
-    std::uint32_t n = u32();
-    if (static_cast<std::uint64_t>(n) * element_bytes > remaining()) {
-      throw InputError("genome bytes: truncated in " + context_ + " (offset " + std::to_string(at) +
-                       " of " + std::to_string(size_) + ": count " + std::to_string(n) +
-                       " needs at least " + std::to_string(n * element_bytes) + " more bytes, " +
-                       std::to_string(remaining()) + " left)");
-    }
-    return n;
-  }
-  void expectEnd() {
-    if (offset_ == size_)
-      return;
-    throw InputError("genome bytes: " + std::to_string(size_ - offset_) +
-                     " unexpected bytes after the genome (offset " + std::to_string(offset_) +
-                     " of " + std::to_string(size_) + ")");
-  }
-
- private:
-  std::uint64_t unsignedLe(int bytes) {
-    if (remaining() < static_cast<std::size_t>(bytes)) {
-      throw InputError("genome bytes: truncated in " + context_ + " (offset " +
-                       std::to_string(offset_) + " of " + std::to_string(size_) + ")");
-    }
-    std::uint64_t v = 0;
-    for (int i = 0; i < bytes; ++i)
-      v |= static_cast<std::uint64_t>(bytes_[offset_ + i]) << (8 * i);
-    offset_ += static_cast<std::size_t>(bytes);
-    return v;
-  }
-  const std::uint8_t* bytes_;
-  std::size_t size_;
-  std::size_t offset_ = 0;
-  std::string context_ = "header";
-};
+using Writer = ByteWriter;
+using Reader = ByteReader;
 
 // writers for each gene
 void writeInput(Writer& w, const NeuronInput& input) {
@@ -118,11 +30,11 @@ void writeInput(Writer& w, const NeuronInput& input) {
 }
 
 void writeNeurons(Writer& w, const std::vector<NeuronGene>& neurons) {
-  w.count(neurons.size());
+  w.u32(static_cast<std::uint32_t>(neurons.size()));
   for (const NeuronGene& neuron : neurons) {
     w.u8(static_cast<std::uint8_t>(neuron.function));
     w.f64(neuron.parameter);
-    w.count(neuron.inputs.size());
+    w.u32(static_cast<std::uint32_t>(neuron.inputs.size()));
     for (const NeuronInput& input : neuron.inputs)
       writeInput(w, input);
   }
@@ -158,13 +70,12 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
   std::vector<std::uint8_t> out;
   Writer w(out);
 
-  // header
-  for (char c : kMagic)
-    w.u8(static_cast<std::uint8_t>(c));
+  // header: tag and version
+  w.raw(kGenomeTag.data(), kGenomeTag.size());
   w.u32(kGenomeFormatVersion);
 
   // nodes
-  w.count(genome.nodes.size());
+  w.u32(static_cast<std::uint32_t>(genome.nodes.size()));
   for (const PartGene& node : genome.nodes) {
     w.u8(static_cast<std::uint8_t>(node.shape));
     w.vec3(node.dimensions);
@@ -173,13 +84,13 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
     w.vec3(node.joint_limit);
     w.u8(node.recursive_limit);
     writeNeurons(w, node.neurons);
-    w.count(node.effectors.size());
+    w.u32(static_cast<std::uint32_t>(node.effectors.size()));
     for (const EffectorGene& effector : node.effectors)
       writeInput(w, effector.input);
   }
 
   // connections
-  w.count(genome.connections.size());
+  w.u32(static_cast<std::uint32_t>(genome.connections.size()));
   for (const ConnectionGene& c : genome.connections) {
     w.u16(c.from);
     w.u16(c.to);
@@ -201,15 +112,13 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
 }
 
 Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
-  if (bytes == nullptr && size > 0)
-    throw InputError("genome bytes: null buffer");
-  Reader r(bytes, size);
+  Reader r(bytes, size, "genome bytes");
 
-  // header: magic and version
-  if (size < sizeof(kMagic) || std::memcmp(bytes, kMagic, sizeof(kMagic)) != 0) {
+  // header: tag and version
+  if (size < kGenomeTag.size() || std::memcmp(bytes, kGenomeTag.data(), kGenomeTag.size()) != 0) {
     throw InputError("genome bytes: not a cambrian genome (bad magic)");
   }
-  for (std::size_t i = 0; i < sizeof(kMagic); ++i)
+  for (std::size_t i = 0; i < kGenomeTag.size(); ++i)
     r.u8();
   r.context("header version");
   std::uint32_t version = r.u32();
@@ -268,4 +177,4 @@ Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
   return genome;
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

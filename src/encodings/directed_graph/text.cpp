@@ -1,9 +1,9 @@
 // cambrian: the readable, line-oriented text form of a genome (grammar in docs/genome.md).
 #include "cambrian/error.hpp"
-#include "cambrian/genome.hpp"
 
-#include "gene_ranges.hpp"
-#include "number_text.hpp"
+#include "core/number_text.hpp"
+#include "encodings/directed_graph/gene_ranges.hpp"
+#include "encodings/directed_graph/genome.hpp"
 
 #include <charconv>
 #include <cstring>
@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace cambrian {
+namespace cambrian::graph {
 namespace {
 
 constexpr const char* kHeader = "cambrian-genome";
@@ -542,4 +542,4 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
   return genome;
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

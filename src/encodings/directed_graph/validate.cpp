@@ -1,13 +1,13 @@
 // cambrian: structural and range checks of a genome against GenomeLimits.
 #include "cambrian/error.hpp"
-#include "cambrian/genome.hpp"
 
-#include "gene_ranges.hpp"
-#include "number_text.hpp"
+#include "core/number_text.hpp"
+#include "encodings/directed_graph/gene_ranges.hpp"
+#include "encodings/directed_graph/genome.hpp"
 
 #include <string>
 
-namespace cambrian {
+namespace cambrian::graph {
 namespace {
 
 // throws unless lo <= value <= hi (NaN fails), naming the gene, field and the bound's origin
@@ -156,4 +156,4 @@ void validateGenome(const Genome& genome, const GenomeLimits& limits) {
   }
 }
 
-}  // namespace cambrian
+}  // namespace cambrian::graph

@@ -1,0 +1,180 @@
+// cambrian: the directed-graph encoding's settings and its genotype operations.
+#include "encodings/directed_graph/encoding.hpp"
+
+#include "cambrian/error.hpp"
+
+#include "core/settings.hpp"
+
+#include <cmath>
+
+namespace cambrian::graph {
+
+namespace {
+
+// the encoding whose prototype every directed-graph genotype refers to
+const DirectedGraphEncoding& prototype() {
+  static const DirectedGraphEncoding encoding;
+  return encoding;
+}
+
+}  // namespace
+
+Genotype makeGenotype(Genome genome) {
+  return Genotype(prototype(), std::make_shared<GraphGenomeData>(std::move(genome)));
+}
+
+const Genome& graphGenome(const Genotype& genotype) {
+  if (!genotype)
+    throw GenomeError("directed_graph: no genome");
+  return genotype.as<GraphGenomeData>().genome;
+}
+
+std::unique_ptr<Encoding> DirectedGraphEncoding::clone() const {
+  return std::make_unique<DirectedGraphEncoding>(*this);
+}
+
+void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
+  // [genome]: the limits, with the ranges each must keep
+  GenomeLimits& g = limits;
+  s.describeSection("genome", "[genome] the genome encoding and its limits");
+  s.add("genome.max_nodes", g.max_nodes, "maximum genes (graph nodes) per genome")
+      .require([&g] { return g.max_nodes >= 1 && g.max_nodes <= 1000; }, "must be in 1..1000");
+  s.add("genome.max_connections", g.max_connections, "maximum connections per genome")
+      .require([&g] { return g.max_connections >= 0 && g.max_connections <= 4000; },
+               "must be in 0..4000");
+  s.add("genome.max_parts", g.max_parts, "maximum body parts after development")
+      .require([&g] { return g.max_parts >= 1 && g.max_parts <= 1000; }, "must be in 1..1000");
+  s.add("genome.max_recursive_limit", g.max_recursive_limit, "largest recursive limit of a node")
+      .require([&g] { return g.max_recursive_limit >= 1 && g.max_recursive_limit <= 64; },
+               "must be in 1..64");
+  s.add("genome.max_neurons_per_node", g.max_neurons_per_node, "local neurons per node")
+      .require([&g] { return g.max_neurons_per_node >= 0 && g.max_neurons_per_node <= 64; },
+               "must be in 0..64");
+  s.add("genome.max_brain_neurons", g.max_brain_neurons, "global (brain) neurons")
+      .require([&g] { return g.max_brain_neurons >= 0 && g.max_brain_neurons <= 256; },
+               "must be in 0..256");
+  s.add("genome.max_inputs", g.max_inputs,
+        "input wires stored per neuron (a neuron reads at most 3)")
+      .require([&g] { return g.max_inputs >= 0 && g.max_inputs <= 3; }, "must be in 0..3");
+  s.add("genome.min_part_size", g.min_part_size, "smallest box side, m")
+      .require([&g] { return g.min_part_size > 0 && std::isfinite(g.min_part_size); },
+               "must be > 0 and finite");
+  s.add("genome.max_part_size", g.max_part_size, "largest box side, m")
+      .require(
+          [&g] { return g.max_part_size >= g.min_part_size && std::isfinite(g.max_part_size); },
+          "must be >= genome.min_part_size and finite");
+  s.add("genome.min_density", g.min_density, "smallest part density, kg/m^3")
+      .require([&g] { return g.min_density > 0 && std::isfinite(g.min_density); },
+               "must be > 0 and finite");
+  s.add("genome.max_density", g.max_density, "largest part density, kg/m^3")
+      .require([&g] { return g.max_density >= g.min_density && std::isfinite(g.max_density); },
+               "must be >= genome.min_density and finite");
+  s.add("genome.max_weight", g.max_weight, "largest |weight| of a neuron or effector input")
+      .require([&g] { return g.max_weight >= 0 && std::isfinite(g.max_weight); },
+               "must be >= 0 and finite");
+  s.add("genome.min_scale", g.min_scale, "smallest size multiplier of a connection")
+      .require([&g] { return g.min_scale > 0 && std::isfinite(g.min_scale); },
+               "must be > 0 and finite");
+  s.add("genome.max_scale", g.max_scale, "largest size multiplier of a connection")
+      .require([&g] { return g.max_scale >= g.min_scale && std::isfinite(g.max_scale); },
+               "must be >= genome.min_scale and finite");
+  s.add("genome.max_frequency", g.max_frequency, "highest joint oscillator frequency, Hz")
+      .require([&g] { return g.max_frequency >= 0 && std::isfinite(g.max_frequency); },
+               "must be >= 0 and finite");
+
+  // [evolution]: the structural mutation rates of the graph (their historic keys)
+  MutationSettings& m = mutation;
+  auto probability = [&s](const char* key, double& rate, const char* help) {
+    s.add(key, rate, help).require([&rate] { return rate >= 0 && rate <= 1; }, "must be in [0, 1]");
+  };
+  s.add("evolution.mutation_perturbation", m.perturbation,
+        "perturbation scale, fraction of each parameter's range")
+      .require([&m] { return m.perturbation > 0 && m.perturbation <= 10; }, "must be in (0, 10]");
+  probability("evolution.add_node_rate", m.add_node_rate, "chance a mutation adds a node");
+  probability("evolution.remove_node_rate", m.remove_node_rate, "chance a mutation removes a node");
+  probability("evolution.add_connection_rate", m.add_connection_rate,
+              "chance a mutation adds a connection");
+  probability("evolution.remove_connection_rate", m.remove_connection_rate,
+              "chance a mutation removes a connection");
+  probability("evolution.repoint_rate", m.repoint_rate, "chance each connection is re-pointed");
+  probability("evolution.add_neuron_rate", m.add_neuron_rate, "chance a mutation adds a neuron");
+  probability("evolution.remove_neuron_rate", m.remove_neuron_rate,
+              "chance a mutation removes a neuron");
+  s.add("evolution.keep_unconnected", m.keep_unconnected,
+        "keep nodes unreachable from the root (Chaumont) instead of collecting them");
+}
+
+Genotype DirectedGraphEncoding::random(std::uint64_t seed, std::uint64_t generation,
+                                       std::uint64_t individual) const {
+  return makeGenotype(randomGenome(limits, seed, generation, individual));
+}
+
+void DirectedGraphEncoding::validate(const Genotype& genome) const {
+  requireOwn(genome);
+  validateGenome(graphGenome(genome), limits);
+}
+
+GenomeSize DirectedGraphEncoding::size(const Genotype& genotype) const {
+  const Genome& genome = graphGenome(genotype);
+  GenomeSize size;
+  size.genes = genome.nodes.size();
+  size.links = genome.connections.size();
+  // the mean box side per node, summed in node order
+  for (const PartGene& node : genome.nodes) {
+    double side = (node.dimensions.x + node.dimensions.y + node.dimensions.z) / 3;
+    if (std::isfinite(side))
+      size.total_part_size += std::max(0.0, side);
+  }
+  return size;
+}
+
+Creature DirectedGraphEncoding::develop(const Genotype& genome) const {
+  requireOwn(genome);
+  return graph::develop(graphGenome(genome), limits);
+}
+
+Genotype DirectedGraphEncoding::mutate(const Genotype& parent, double parameter_rate,
+                                       Rng& rng) const {
+  MutationSettings settings = mutation;
+  settings.parameter_rate = parameter_rate;
+  return makeGenotype(graph::mutate(graphGenome(parent), limits, settings, rng));
+}
+
+Genotype DirectedGraphEncoding::combine(Variation variation, const Genotype& a, const Genotype& b,
+                                        Rng& rng) const {
+  const Genome& first = graphGenome(a);
+  const Genome& second = graphGenome(b);
+  if (variation == Variation::graft)
+    return makeGenotype(graft(first, second, limits, rng));
+  return makeGenotype(crossover(first, second, limits, rng));
+}
+
+Genotype DirectedGraphEncoding::tidy(const Genotype& genome) const {
+  // Chaumont keeps unreachable nodes; otherwise they are collected
+  if (mutation.keep_unconnected)
+    return genome;
+  return makeGenotype(removeUnreachableNodes(graphGenome(genome)));
+}
+
+std::vector<std::uint8_t> DirectedGraphEncoding::toBytes(const GenomeData& data) const {
+  const auto* graph = dynamic_cast<const GraphGenomeData*>(&data);
+  if (!graph)
+    throw GenomeError("directed_graph: asked to write a genome of another encoding");
+  return serializeGenome(graph->genome);
+}
+
+Genotype DirectedGraphEncoding::fromBytes(const std::uint8_t* bytes, std::size_t size) const {
+  Genome genome = deserializeGenome(bytes, size);
+  return Genotype(prototype(), std::make_shared<GraphGenomeData>(std::move(genome)),
+                  std::vector<std::uint8_t>(bytes, bytes + size));
+}
+
+std::string DirectedGraphEncoding::toText(const Genotype& genome) const {
+  return genomeToText(graphGenome(genome));
+}
+
+Genotype DirectedGraphEncoding::fromText(const std::string& text, const std::string& source) const {
+  return makeGenotype(parseGenomeText(text, source));
+}
+
+}  // namespace cambrian::graph

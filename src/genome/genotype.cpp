@@ -1,0 +1,64 @@
+// cambrian: genotypes — a genome of any encoding with its byte form made once.
+#include "cambrian/encoding.hpp"
+#include "cambrian/error.hpp"
+
+#include <typeinfo>
+
+namespace cambrian {
+
+struct Genotype::State {
+  const Encoding* encoding = nullptr;
+  std::shared_ptr<const GenomeData> data;
+  mutable std::vector<std::uint8_t> bytes;  // empty until bytes() (a byte form is never empty)
+};
+
+Genotype::Genotype(const Encoding& encoding, std::shared_ptr<const GenomeData> data)
+    : state_(std::make_shared<State>()) {
+  state_->encoding = &encoding;
+  state_->data = std::move(data);
+}
+
+Genotype::Genotype(const Encoding& encoding, std::shared_ptr<const GenomeData> data,
+                   std::vector<std::uint8_t> bytes)
+    : Genotype(encoding, std::move(data)) {
+  state_->bytes = std::move(bytes);
+}
+
+const Encoding& Genotype::encoding() const {
+  if (!state_)
+    throw Error(ExitCode::failure, "genotype: empty (no genome)");
+  return *state_->encoding;
+}
+
+const GenomeData& Genotype::data() const {
+  if (!state_ || !state_->data)
+    throw Error(ExitCode::failure, "genotype: empty (no genome)");
+  return *state_->data;
+}
+
+const std::vector<std::uint8_t>& Genotype::bytes() const {
+  if (state_->bytes.empty())
+    state_->bytes = encoding().toBytes(data());
+  return state_->bytes;
+}
+
+bool operator==(const Genotype& a, const Genotype& b) {
+  if (!a || !b)
+    return !a && !b;
+  return a.state_ == b.state_ || a.bytes() == b.bytes();
+}
+
+void Genotype::wrongType() const {
+  throw GenomeError("genome of encoding " + encoding().name() + " is not the type asked for (" +
+                    typeid(data()).name() + ")");
+}
+
+void Encoding::requireOwn(const Genotype& genome) const {
+  if (!genome)
+    throw GenomeError(name() + ": no genome");
+  if (genome.encoding().name() != name())
+    throw GenomeError("a genome of encoding " + genome.encoding().name() + " given to encoding " +
+                      name() + " (genome.encoding)");
+}
+
+}  // namespace cambrian

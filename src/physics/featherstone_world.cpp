@@ -1,0 +1,503 @@
+// cambrian: the Bullet Featherstone multibody world.
+#include "physics/featherstone_world.hpp"
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cambrian {
+
+namespace {
+
+btVector3 toBt(Vec3 v) {
+  return btVector3(v.x, v.y, v.z);
+}
+Vec3 fromBt(const btVector3& v) {
+  return {v.x(), v.y(), v.z()};
+}
+btQuaternion toBt(Quat q) {
+  return btQuaternion(q.x, q.y, q.z, q.w);
+}
+Quat fromBt(const btQuaternion& q) {
+  return {q.w(), q.x(), q.y(), q.z()};
+}
+
+// the user index of the ground and of free object k (parts carry their own index, >= 0)
+constexpr int kGroundIndex = -1;
+int objectIndex(int k) {
+  return -2 - k;
+}
+
+// a part's collider: collides with the ground and, while `self_contacts` is set, with the
+// creature's other parts except its parent and children (the joint neighbours), also across
+// the virtual links of multi-degree-of-freedom joints
+class PartCollider : public btMultiBodyLinkCollider {
+ public:
+  PartCollider(btMultiBody* body, int link, int part, int parent_part, const bool* self_contacts)
+      : btMultiBodyLinkCollider(body, link),
+        part_(part),
+        parent_part_(parent_part),
+        self_contacts_(self_contacts) {}
+
+  bool checkCollideWithOverride(const btCollisionObject* other_object) const override {
+    const auto* other = dynamic_cast<const PartCollider*>(other_object);
+    if (!other || other->m_multiBody != m_multiBody)
+      return true;
+    if (!*self_contacts_)
+      return false;
+    return other->part_ != parent_part_ && other->parent_part_ != part_;
+  }
+
+  int part_, parent_part_;
+  const bool* self_contacts_;
+};
+
+// the collision shape of a part or object (capsules and cylinders along their x axis)
+std::unique_ptr<btCollisionShape> shapeOf(PartShape shape, Vec3 size) {
+  const double radius = 0.5 * size.y;
+  switch (shape) {
+    case PartShape::box:
+      break;
+    case PartShape::sphere:
+      return std::make_unique<btSphereShape>(0.5 * size.x);
+    case PartShape::capsule:
+      return std::make_unique<btCapsuleShapeX>(radius, std::max(0.0, size.x - 2 * radius));
+    case PartShape::cylinder:
+      return std::make_unique<btCylinderShapeX>(btVector3(0.5 * size.x, radius, radius));
+  }
+  return std::make_unique<btBoxShape>(toBt(size * 0.5));
+}
+
+// inertia of a part about its centre
+btVector3 inertiaOf(PartShape shape, Vec3 size, double mass) {
+  btVector3 inertia;
+  shapeOf(shape, size)->calculateLocalInertia(mass, inertia);
+  return inertia;
+}
+
+// how far a part reaches below its centre along world z, from its world basis
+double reachDown(const PartPlan& part, const btMatrix3x3& basis) {
+  Vec3 half = part.size * 0.5;
+  const double along = std::abs(basis[2][0]);
+  const double radius = 0.5 * part.size.y;
+  switch (part.shape) {
+    case PartShape::box:
+      break;
+    case PartShape::sphere:
+      return half.x;
+    case PartShape::capsule:
+      return along * std::max(0.0, half.x - radius) + radius;
+    case PartShape::cylinder:
+      return along * half.x + radius * std::sqrt(std::max(0.0, 1 - along * along));
+  }
+  return std::abs(basis[2][0]) * half.x + std::abs(basis[2][1]) * half.y +
+         std::abs(basis[2][2]) * half.z;
+}
+
+}  // namespace
+
+// collision memory pools sized for one creature (at most a few dozen parts): Bullet's default
+// pools (4,096 manifolds and algorithms) cost more to set up than a birth check itself; a pool
+// that runs out falls back to the heap, which changes no result
+btDefaultCollisionConstructionInfo creaturePools() {
+  btDefaultCollisionConstructionInfo info;
+  info.m_defaultMaxPersistentManifoldPoolSize = 256;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = 256;
+  return info;
+}
+
+// the Bullet objects of one world, destroyed in reverse order of creation
+struct FeatherstoneObjects {
+  btDefaultCollisionConfiguration configuration{creaturePools()};
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  btMultiBodyConstraintSolver solver;
+  btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  btStaticPlaneShape ground_shape{btVector3(0, 0, 1), 0};
+  btCollisionObject ground;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
+  std::vector<std::unique_ptr<PartCollider>> colliders;  // one per part, BodyPlan order
+  std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
+  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;  // one per effector (or null)
+  std::unique_ptr<btMultiBody> body;
+  std::vector<std::unique_ptr<btCollisionShape>> object_shapes;
+  std::vector<std::unique_ptr<btDefaultMotionState>> object_states;
+  std::vector<std::unique_ptr<btRigidBody>> objects;  // Environment::objects order
+  bool self_contacts = true;  // parts touch each other (always at the birth check)
+
+  ~FeatherstoneObjects() {
+    for (auto& object : objects)
+      world.removeRigidBody(object.get());
+    for (auto& motor : motors)
+      if (motor)
+        world.removeMultiBodyConstraint(motor.get());
+    for (auto& limit : limits)
+      world.removeMultiBodyConstraint(limit.get());
+    for (auto& collider : colliders)
+      world.removeCollisionObject(collider.get());
+    if (body)
+      world.removeMultiBody(body.get());
+    world.removeCollisionObject(&ground);
+  }
+};
+
+FeatherstoneWorld::FeatherstoneWorld(const BodyPlan& plan, const Environment& environment,
+                                     const PhysicsSettings& physics, double birth_height)
+    : plan_(plan), environment_(environment), physics_(physics) {
+  build(birth_height);
+  if (birth_status_ == EvalStatus::ok)
+    checkBirthPenetration();
+  if (bullet_->body && !physics_.self_collision)
+    stopSelfContacts();
+}
+
+FeatherstoneWorld::~FeatherstoneWorld() = default;
+
+void FeatherstoneWorld::refuse(EvalStatus status, std::string message) {
+  if (birth_status_ != EvalStatus::ok)
+    return;
+  birth_status_ = status;
+  birth_message_ = std::move(message);
+}
+
+void FeatherstoneWorld::stopSelfContacts() {
+  FeatherstoneObjects& b = *bullet_;
+  b.self_contacts = false;
+
+  // drop the part-part pairs (and their contact manifolds) the birth check found
+  btOverlappingPairCache* pairs = b.world.getBroadphase()->getOverlappingPairCache();
+  btBroadphasePairArray& array = pairs->getOverlappingPairArray();
+  for (int i = array.size() - 1; i >= 0; --i) {
+    btBroadphasePair& pair = array[i];
+    const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+    const auto* c = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+    if (a->getUserIndex() >= 0 && c->getUserIndex() >= 0)
+      pairs->removeOverlappingPair(pair.m_pProxy0, pair.m_pProxy1, b.world.getDispatcher());
+  }
+}
+
+void FeatherstoneWorld::build(double birth_height) {
+  bullet_ = std::make_unique<FeatherstoneObjects>();
+  FeatherstoneObjects& b = *bullet_;
+  const int part_count = static_cast<int>(plan_.parts.size());
+
+  // bodies this world cannot build
+  if (part_count == 0) {
+    refuse(EvalStatus::invalid_body, "the body plan has no parts");
+    return;
+  }
+  if (!plan_.loops.empty()) {
+    std::ostringstream message;
+    message << "physics.world = featherstone builds tree-shaped bodies only, and this body has "
+            << plan_.loops.size() << " closed-loop joint(s) (the first between parts "
+            << plan_.loops[0].part_a << " and " << plan_.loops[0].part_b
+            << "); a world that builds closed loops is needed";
+    refuse(EvalStatus::invalid_body, message.str());
+    return;
+  }
+
+  // world: gravity, fixed-step solver settings, ground plane
+  b.world.setGravity(btVector3(0, 0, -physics_.gravity));
+  b.world.getSolverInfo().m_numIterations = physics_.solver_iterations;
+  b.ground.setCollisionShape(&b.ground_shape);
+  b.ground.setFriction(environment_.ground.friction);
+  b.ground.setRestitution(environment_.ground.restitution);
+  b.ground.setUserIndex(kGroundIndex);
+  b.world.addCollisionObject(&b.ground, btBroadphaseProxy::StaticFilter,
+                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+
+  // count Bullet links: a k-DoF joint is k links (k-1 virtual), fixed is one fixed link
+  int link_count = 0;
+  for (int i = 1; i < part_count; ++i)
+    link_count += std::max(1, degreesOfFreedom(plan_.parts[i].joint));
+
+  // place the creature: lowest point at z = birth_height
+  double lowest = 0;
+  for (int i = 0; i < part_count; ++i) {
+    double z = lowestZ(plan_.parts[i], plan_.parts[i].pose);
+    if (i == 0 || z < lowest)
+      lowest = z;
+  }
+  const PartPlan& root = plan_.parts[0];
+  Vec3 base_position = root.pose.position + Vec3{0, 0, birth_height - lowest};
+
+  // the multibody: root part is the floating base
+  b.body = std::make_unique<btMultiBody>(link_count, root.mass,
+                                         inertiaOf(root.shape, root.size, root.mass), false, false);
+  btMultiBody& body = *b.body;
+  body.setBasePos(toBt(base_position));
+  body.setWorldToBaseRot(toBt(conjugate(root.pose.rotation)));
+  body.setHasSelfCollision(true);
+  body.setLinearDamping(0);
+  body.setAngularDamping(0);
+  body.setMaxCoordinateVelocity(100);
+
+  // links: walk the parts in plan order (parents first)
+  dof_link_.assign(part_count, {-1, -1, -1});
+  max_torque_.assign(part_count, 0);
+  std::vector<int> part_link(part_count, -1);  // Bullet link carrying each part's shape
+  int next_link = 0;
+  for (int i = 1; i < part_count; ++i) {
+    const PartPlan& part = plan_.parts[i];
+    int parent_link = part_link[part.parent];
+    btQuaternion parent_to_this = toBt(conjugate(part.parent_to_child));
+    btVector3 parent_offset = toBt(part.pivot_in_parent);
+    btVector3 com_offset = toBt(-part.pivot_in_child);
+    btVector3 inertia = inertiaOf(part.shape, part.size, part.mass);
+    int dofs = degreesOfFreedom(part.joint);
+    max_torque_[i] = physics_.strength_per_area * part.cross_section;
+
+    if (dofs == 0) {
+      body.setupFixed(next_link, part.mass, inertia, parent_link, parent_to_this, parent_offset,
+                      com_offset, true);
+      part_link[i] = next_link++;
+      continue;
+    }
+    if (part.joint == JointType::prismatic) {
+      body.setupPrismatic(next_link, part.mass, inertia, parent_link, parent_to_this,
+                          toBt(part.axes[0]), parent_offset, com_offset, true);
+      dof_link_[i][0] = next_link;
+      damped_links_.push_back(next_link);
+      part_link[i] = next_link++;
+      continue;
+    }
+
+    // a chain of revolute links: virtual ones at the pivot, the real part last
+    double virtual_mass = 0.2 * part.mass;
+    double radius = 0.5 * std::min({part.size.x, part.size.y, part.size.z});
+    double virtual_inertia = 0.4 * virtual_mass * radius * radius;
+    for (int d = 0; d < dofs; ++d) {
+      bool last = d == dofs - 1;
+      int link = next_link++;
+      body.setupRevolute(
+          link, last ? part.mass : virtual_mass,
+          last ? inertia : btVector3(virtual_inertia, virtual_inertia, virtual_inertia),
+          d == 0 ? parent_link : link - 1, d == 0 ? parent_to_this : btQuaternion::getIdentity(),
+          toBt(part.axes[d]), d == 0 ? parent_offset : btVector3(0, 0, 0),
+          last ? com_offset : btVector3(0, 0, 0), true);
+      dof_link_[i][d] = link;
+      damped_links_.push_back(link);
+    }
+    part_link[i] = next_link - 1;
+  }
+  body.finalizeMultiDof();
+  b.world.addMultiBody(&body);
+
+  // colliders: one shape per part, with the part's material
+  for (int i = 0; i < part_count; ++i) {
+    const PartPlan& part = plan_.parts[i];
+    b.shapes.push_back(shapeOf(part.shape, part.size));
+    auto collider =
+        std::make_unique<PartCollider>(&body, part_link[i], i, part.parent, &b.self_contacts);
+    collider->setCollisionShape(b.shapes.back().get());
+    collider->setFriction(part.material.friction);
+    collider->setRestitution(part.material.restitution < 0 ? physics_.restitution
+                                                           : part.material.restitution);
+    collider->setUserIndex(i);
+    if (i == 0) {
+      body.setBaseCollider(collider.get());
+    } else {
+      body.getLink(part_link[i]).m_collider = collider.get();
+    }
+    b.world.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter,
+                               btBroadphaseProxy::AllFilter);
+    b.colliders.push_back(std::move(collider));
+  }
+
+  // joint limits on every degree of freedom
+  for (int i = 1; i < part_count; ++i) {
+    for (int d = 0; d < 3; ++d) {
+      int link = dof_link_[i][d];
+      if (link < 0)
+        continue;
+      double limit = plan_.parts[i].joint_limit[d];
+      b.limits.push_back(
+          std::make_unique<btMultiBodyJointLimitConstraint>(&body, link, -limit, limit));
+      b.world.addMultiBodyConstraint(b.limits.back().get());
+    }
+  }
+
+  // saturated motors: one per effector, idle (no impulse) until the controller drives it
+  if (physics_.actuation == Actuation::saturated_motor) {
+    for (const EffectorPlan& effector : plan_.effectors) {
+      int link = dof_link_[effector.part][effector.dof];
+      if (link < 0) {
+        b.motors.push_back(nullptr);
+        continue;
+      }
+      b.motors.push_back(std::make_unique<btMultiBodyJointMotor>(&body, link, 0.0, 0.0));
+      b.world.addMultiBodyConstraint(b.motors.back().get());
+    }
+  }
+
+  // collider transforms from the zero pose
+  btAlignedObjectArray<btQuaternion> world_to_local;
+  btAlignedObjectArray<btVector3> local_origin;
+  body.updateCollisionObjectWorldTransforms(world_to_local, local_origin);
+  contact_.assign(part_count, 0);
+
+  // the environment's free objects, after the creature
+  addObjects();
+}
+
+void FeatherstoneWorld::addObjects() {
+  FeatherstoneObjects& b = *bullet_;
+  for (std::size_t k = 0; k < environment_.objects.size(); ++k) {
+    const FreeObject& object = environment_.objects[k];
+    b.object_shapes.push_back(shapeOf(object.shape, object.size));
+    btCollisionShape* shape = b.object_shapes.back().get();
+    btVector3 inertia(0, 0, 0);
+    if (object.mass > 0)
+      shape->calculateLocalInertia(object.mass, inertia);
+    btTransform start(toBt(object.pose.rotation), toBt(object.pose.position));
+    b.object_states.push_back(std::make_unique<btDefaultMotionState>(start));
+    btRigidBody::btRigidBodyConstructionInfo info(object.mass, b.object_states.back().get(), shape,
+                                                  inertia);
+    info.m_friction = object.material.friction;
+    info.m_restitution =
+        object.material.restitution < 0 ? physics_.restitution : object.material.restitution;
+    b.objects.push_back(std::make_unique<btRigidBody>(info));
+    b.objects.back()->setUserIndex(objectIndex(static_cast<int>(k)));
+    b.world.addRigidBody(b.objects.back().get());
+  }
+}
+
+void FeatherstoneWorld::checkBirthPenetration() {
+  FeatherstoneObjects& b = *bullet_;
+
+  // run collision detection once on the birth pose
+  b.world.performDiscreteCollisionDetection();
+  btDispatcher* dispatcher = b.world.getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    int part_a = manifold->getBody0()->getUserIndex();
+    int part_b = manifold->getBody1()->getUserIndex();
+    if (part_a < 0 || part_b < 0)
+      continue;  // the ground or an object
+    for (int c = 0; c < manifold->getNumContacts(); ++c) {
+      double depth = manifold->getContactPoint(c).getDistance();
+      if (depth < -physics_.penetration_tolerance) {
+        std::ostringstream message;
+        message << "parts " << std::min(part_a, part_b) << " and " << std::max(part_a, part_b)
+                << " overlap by " << -depth << " m at birth";
+        refuse(EvalStatus::self_penetration, message.str());
+        return;
+      }
+    }
+  }
+}
+
+const std::vector<std::uint8_t>& FeatherstoneWorld::contacts() {
+  // every manifold with a touching point marks both parts
+  std::fill(contact_.begin(), contact_.end(), 0);
+  btDispatcher* dispatcher = bullet_->world.getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    bool touching = false;
+    for (int c = 0; c < manifold->getNumContacts() && !touching; ++c)
+      touching = manifold->getContactPoint(c).getDistance() <= 0.001;
+    if (!touching)
+      continue;
+    int part_a = manifold->getBody0()->getUserIndex();
+    int part_b = manifold->getBody1()->getUserIndex();
+    if (part_a >= 0)
+      contact_[part_a] = 1;
+    if (part_b >= 0)
+      contact_[part_b] = 1;
+  }
+  return contact_;
+}
+
+double FeatherstoneWorld::jointPosition(int part, int dof) const {
+  int link = dof_link_[part][dof];
+  return link < 0 ? 0.0 : bullet_->body->getJointPos(link);
+}
+
+Vec3 FeatherstoneWorld::directionInPart(int part, Vec3 point) const {
+  const btTransform& frame = bullet_->colliders[part]->getWorldTransform();
+  btVector3 to_point = frame.getBasis().transpose() * (toBt(point) - frame.getOrigin());
+  double distance = to_point.length();
+  if (distance > 1e-9)
+    to_point /= distance;
+  return fromBt(to_point);
+}
+
+void FeatherstoneWorld::applyTorques(std::span<const double> commands, double substep) {
+  btMultiBody& body = *bullet_->body;
+
+  // passive damping on every jointed link
+  for (int link : damped_links_)
+    body.addJointTorque(link, -physics_.joint_damping * body.getJointVel(link));
+
+  // saturated motors: the command's sign picks the target speed, its size the torque budget
+  if (physics_.actuation == Actuation::saturated_motor) {
+    for (std::size_t e = 0; e < bullet_->motors.size(); ++e) {
+      btMultiBodyJointMotor* motor = bullet_->motors[e].get();
+      if (!motor)
+        continue;
+      double command = commands.empty() ? 0.0 : commands[e];
+      int part = plan_.effectors[e].part;
+      motor->setVelocityTarget(command < 0 ? -physics_.motor_speed : physics_.motor_speed);
+      motor->setMaxAppliedImpulse(std::abs(command) * max_torque_[part] * substep);
+    }
+    return;
+  }
+  if (commands.empty())
+    return;
+
+  // explicit torques: effector commands scaled by each joint's strength
+  for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
+    const EffectorPlan& effector = plan_.effectors[e];
+    int link = dof_link_[effector.part][effector.dof];
+    if (link < 0)
+      continue;
+    body.addJointTorque(link, commands[e] * max_torque_[effector.part]);
+  }
+}
+
+void FeatherstoneWorld::step(std::span<const double> commands) {
+  // `substeps` equal Bullet steps (maxSubSteps = 0: exactly one internal step each); Bullet
+  // clears applied torques after every internal step, so they are re-applied
+  const double substep = physics_.time_step / physics_.substeps;
+  for (int k = 0; k < physics_.substeps; ++k) {
+    applyTorques(commands, substep);
+    bullet_->world.stepSimulation(substep, 0);
+  }
+}
+
+Vec3 FeatherstoneWorld::partPosition(int part) const {
+  return fromBt(bullet_->colliders[part]->getWorldTransform().getOrigin());
+}
+
+Transform FeatherstoneWorld::partPose(int part) const {
+  const btTransform& transform = bullet_->colliders[part]->getWorldTransform();
+  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+}
+
+double FeatherstoneWorld::lowestPoint() const {
+  double lowest = 0;
+  for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
+    // the centre minus how far the part reaches down
+    const btTransform& transform = bullet_->colliders[i]->getWorldTransform();
+    double z = transform.getOrigin().z() - reachDown(plan_.parts[i], transform.getBasis());
+    if (i == 0 || z < lowest)
+      lowest = z;
+  }
+  return lowest;
+}
+
+Transform FeatherstoneWorld::objectPose(int object) const {
+  const btTransform& transform =
+      bullet_->objects.at(static_cast<std::size_t>(object))->getWorldTransform();
+  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+}
+
+}  // namespace cambrian

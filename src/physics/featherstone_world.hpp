@@ -1,0 +1,63 @@
+// cambrian: the Bullet Featherstone world — a creature as one btMultiBody (the root part the
+// floating base) on the environment's ground, with the environment's free objects as rigid
+// bodies. Multi-degree-of-freedom joints are chains of revolute joints through light virtual
+// links. Builds tree-shaped bodies only: a plan with closed-loop joints is refused (invalid_body).
+#pragma once
+
+#include "physics/world.hpp"
+
+#include <array>
+#include <memory>
+
+namespace cambrian {
+
+struct FeatherstoneObjects;  // the Bullet objects, private to featherstone_world.cpp
+
+/// See the file comment. The creature is born with its lowest point `birth_height` m above the
+/// ground; a body overlapping itself at birth has birthStatus() self_penetration. Unless
+/// physics.self_collision, parts touch only the ground and the objects afterwards.
+class FeatherstoneWorld : public World {
+ public:
+  /// The registered name.
+  static constexpr const char* kName = "featherstone";
+
+  FeatherstoneWorld(const BodyPlan& plan, const Environment& environment,
+                    const PhysicsSettings& physics, double birth_height);
+  ~FeatherstoneWorld() override;
+  FeatherstoneWorld(const FeatherstoneWorld&) = delete;
+  FeatherstoneWorld& operator=(const FeatherstoneWorld&) = delete;
+
+  EvalStatus birthStatus() const override { return birth_status_; }
+  const std::string& birthMessage() const override { return birth_message_; }
+  void step(std::span<const double> commands) override;
+  Vec3 partPosition(int part) const override;
+  Transform partPose(int part) const override;
+  double jointPosition(int part, int dof) const override;
+  const std::vector<std::uint8_t>& contacts() override;
+  Vec3 directionInPart(int part, Vec3 point) const override;
+  double lowestPoint() const override;
+  Transform objectPose(int object) const override;
+
+ private:
+  void build(double birth_height);
+  void addObjects();
+  void checkBirthPenetration();
+  void stopSelfContacts();
+  void applyTorques(std::span<const double> commands, double substep);
+  void refuse(EvalStatus status, std::string message);
+
+  const BodyPlan& plan_;
+  const Environment& environment_;
+  PhysicsSettings physics_;
+  std::unique_ptr<FeatherstoneObjects> bullet_;
+  EvalStatus birth_status_ = EvalStatus::ok;
+  std::string birth_message_;
+
+  // per part: Bullet link of each degree of freedom (-1 none) and the joint's torque limit
+  std::vector<std::array<int, 3>> dof_link_;
+  std::vector<double> max_torque_;
+  std::vector<std::uint8_t> contact_;
+  std::vector<int> damped_links_;  // every revolute or prismatic link, real or virtual
+};
+
+}  // namespace cambrian

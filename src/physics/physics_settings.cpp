@@ -1,0 +1,64 @@
+// cambrian: the [physics] keys and their ranges.
+#include "physics/physics_settings.hpp"
+
+#include "core/settings.hpp"
+#include "physics/world.hpp"
+
+#include <cmath>
+
+namespace cambrian {
+
+void PhysicsSettings::declareSettings(SettingsSchema& s) {
+  PhysicsSettings& p = *this;
+  s.describeSection("physics", "[physics] world");
+  s.add("physics.world", p.world, "world backend: " + worldNamesText()).oneOf(worldNames());
+  s.add("physics.time_step", p.time_step, "fixed physics step, s")
+      .require([&p] { return p.time_step > 0 && p.time_step <= 0.1; }, "must be in (0, 0.1] s");
+  s.add("physics.substeps", p.substeps, "Bullet steps per time step (torques re-applied each)")
+      .require([&p] { return p.substeps >= 1 && p.substeps <= 100; }, "must be in 1..100");
+  s.add("physics.gravity", p.gravity, "gravity, m/s^2 (downwards)")
+      .require([&p] { return p.gravity >= 0 && std::isfinite(p.gravity); }, "must be >= 0");
+  s.add("physics.ground_friction", p.ground_friction, "ground friction coefficient")
+      .require([&p] { return p.ground_friction >= 0 && std::isfinite(p.ground_friction); },
+               "must be >= 0");
+  s.add("physics.restitution", p.restitution,
+        "restitution of the ground and of parts whose material sets none")
+      .require([&p] { return p.restitution >= 0 && p.restitution <= 1; }, "must be in [0, 1]");
+  s.add("physics.joint_damping", p.joint_damping, "passive joint damping, N m s/rad")
+      .require([&p] { return p.joint_damping >= 0 && std::isfinite(p.joint_damping); },
+               "must be >= 0");
+  s.add("physics.strength_per_area", p.strength_per_area,
+        "joint torque per m^2 of the smaller cross-section, N m/m^2")
+      .require([&p] { return p.strength_per_area >= 0 && std::isfinite(p.strength_per_area); },
+               "must be >= 0");
+  s.addChoice("physics.actuation", p.actuation,
+              {{"motor", Actuation::saturated_motor}, {"torque", Actuation::torque}},
+              "motor (Chaumont: velocity motor at saturation, torque limit from the command) | "
+              "torque (Sims: explicit joint torque)");
+  s.add("physics.motor_speed", p.motor_speed, "target speed of a saturated motor, rad/s")
+      .require([&p] { return p.motor_speed > 0 && std::isfinite(p.motor_speed); }, "must be > 0");
+  s.add("physics.self_collision", p.self_collision,
+        "parts collide with each other while moving (Sims), not only with the ground; overlap at "
+        "birth is rejected either way");
+  s.add("physics.solver_iterations", p.solver_iterations, "constraint solver iterations per step")
+      .require([&p] { return p.solver_iterations >= 1 && p.solver_iterations <= 1000; },
+               "must be in 1..1000");
+  s.add("physics.max_speed", p.max_speed, "a part faster than this has exploded, m/s")
+      .require([&p] { return p.max_speed > 0 && std::isfinite(p.max_speed); },
+               "must be > 0 and finite");
+  s.add("physics.max_displacement", p.max_displacement,
+        "a part farther than this from its start has exploded, m")
+      .require([&p] { return p.max_displacement > 0 && std::isfinite(p.max_displacement); },
+               "must be > 0 and finite");
+  s.add("physics.penetration_tolerance", p.penetration_tolerance,
+        "overlap allowed between non-adjacent parts at birth, m")
+      .require(
+          [&p] { return p.penetration_tolerance >= 0 && std::isfinite(p.penetration_tolerance); },
+          "must be >= 0 and finite");
+  s.add("physics.max_wall_seconds", p.max_wall_seconds,
+        "wall-clock bound of one evaluation, s (0 = none)")
+      .require([&p] { return p.max_wall_seconds >= 0 && std::isfinite(p.max_wall_seconds); },
+               "must be >= 0 and finite (0 = no bound)");
+}
+
+}  // namespace cambrian

@@ -1,0 +1,54 @@
+// cambrian: the settings of the physical world an evaluation runs in ([physics] keys).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace cambrian {
+
+class SettingsSchema;
+
+/// How effector commands move the joints.
+enum class Actuation : std::uint8_t {
+  /// Chaumont et al. 5.3: a velocity motor run at saturation. The command's sign picks the
+  /// direction of a fixed, high target speed and its magnitude the largest torque the motor may
+  /// use (|command| * strength); the constraint solver applies it implicitly with the contacts.
+  saturated_motor,
+  /// Sims: the command times the strength is applied as an explicit joint torque.
+  torque,
+};
+
+/// The physical world an evaluation runs in. Units: SI.
+struct PhysicsSettings {
+  std::string world = "featherstone";  ///< the world backend (a registered World)
+  double time_step = 1.0 / 240.0;  ///< s, fixed: sensors, controller and monitors run at this rate
+  int substeps = 2;       ///< Bullet steps per time step; 1 lets thin, light, strongly driven parts
+                          ///< gain energy from the integrator at 1/240 s
+  double gravity = 9.81;  ///< m / s^2, pointing down (-z)
+  double ground_friction = 1.0;     ///< Coulomb coefficient of the ground
+  double restitution = 0.0;         ///< of the ground and of parts whose material sets none
+  double joint_damping = 0.05;      ///< N m s / rad, passive damping on every joint
+  double strength_per_area = 2000;  ///< N m of torque per m^2 of the smaller cross-section
+  Actuation actuation = Actuation::saturated_motor;  ///< how commands move the joints
+  double motor_speed = 10;                           ///< rad / s, target speed of a saturated motor
+  /// Whether a creature's parts collide with each other while it moves (Sims) or only with the
+  /// ground (Walking with Dinosaurs; Chaumont et al. test self-overlap at birth only). Overlap at
+  /// birth is rejected either way. Off by default: a motor pressing one part into another lets
+  /// Bullet's contact correction pump energy into the body.
+  bool self_collision = false;
+  int solver_iterations = 20;
+  double max_speed = 50;                 ///< m / s: any part faster has exploded
+  double max_displacement = 100;         ///< m: any part farther from its start has exploded
+  double penetration_tolerance = 0.002;  ///< m of overlap allowed between non-adjacent parts at
+                                         ///< birth
+  double max_wall_seconds = 60;          ///< wall-clock bound of one evaluation (0 = none)
+
+  /// Declares the [physics] keys, bound to this object, with their ranges.
+  void declareSettings(SettingsSchema& schema);
+};
+
+/// Bullet's scalar type in this build: "float64" (the float64 package, the default) or
+/// "float32"; recorded in every history (bullet_precision), since results depend on it.
+const char* bulletPrecision();
+
+}  // namespace cambrian

@@ -1,0 +1,138 @@
+// cambrian: a creature in a world — the step loop and the safety monitors.
+#include "physics/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cambrian {
+
+Simulation::Simulation(const BodyPlan& plan, const ControllerPlan* controller,
+                       const Environment& environment, const PhysicsSettings& settings,
+                       double birth_height)
+    : plan_(plan), environment_(environment), settings_(settings) {
+  // the controller first (a plan that does not fit the body throws), then the world
+  sensors_.assign(plan_.sensors.size(), 0.0);
+  drives_.assign(plan_.effectors.size(), 0.0);
+  commands_.assign(plan_.effectors.size(), 0.0);
+  if (controller)
+    controller_ = controller->build(settings_.time_step, sensors_.size(), drives_.size());
+  world_ = makeWorld(plan_, environment_, settings_, birth_height);
+  if (world_->birthStatus() != EvalStatus::ok) {
+    fail(world_->birthStatus(), world_->birthMessage());
+    return;
+  }
+
+  // monitor state: where every part was born
+  birth_position_.resize(plan_.parts.size());
+  for (std::size_t i = 0; i < plan_.parts.size(); ++i)
+    birth_position_[i] = world_->partPosition(static_cast<int>(i));
+  previous_position_ = birth_position_;
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::fail(EvalStatus status, std::string message) {
+  if (status_ != EvalStatus::ok)
+    return;
+  status_ = status;
+  message_ = std::move(message);
+}
+
+void Simulation::readSensors() {
+  // contacts and the light's direction from the root, then every sensor slot
+  const std::vector<std::uint8_t>& contact = world_->contacts();
+  const Vec3 to_light = world_->directionInPart(0, environment_.light);
+  for (std::size_t s = 0; s < plan_.sensors.size(); ++s) {
+    const SensorPlan& sensor = plan_.sensors[s];
+    switch (sensor.kind) {
+      case SensorKind::joint_angle: {
+        double limit = std::max(0.1, plan_.parts[sensor.part].joint_limit[sensor.axis]);
+        sensors_[s] = world_->jointPosition(sensor.part, sensor.axis) / limit;
+        break;
+      }
+      case SensorKind::contact:
+        sensors_[s] = contact[sensor.part];
+        break;
+      case SensorKind::photo:
+        sensors_[s] = to_light[sensor.axis];
+        break;
+    }
+  }
+}
+
+void Simulation::monitor() {
+  const double max_step = settings_.max_speed * settings_.time_step;
+  const double max_displacement_sq = settings_.max_displacement * settings_.max_displacement;
+  for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
+    Vec3 position = world_->partPosition(static_cast<int>(i));
+
+    // non-finite state
+    if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z)) {
+      fail(EvalStatus::non_finite, "part " + std::to_string(i) + " has a non-finite position");
+      return;
+    }
+
+    // numerical explosion: too fast or too far
+    Vec3 moved = position - previous_position_[i];
+    if (dot(moved, moved) > max_step * max_step) {
+      std::ostringstream message;
+      message << "part " << i << " moved at " << norm(moved) / settings_.time_step
+              << " m/s (physics.max_speed " << settings_.max_speed << ") at step " << steps_;
+      fail(EvalStatus::exploded, message.str());
+      return;
+    }
+    Vec3 from_birth = position - birth_position_[i];
+    if (dot(from_birth, from_birth) > max_displacement_sq) {
+      std::ostringstream message;
+      message << "part " << i << " is " << norm(from_birth)
+              << " m from where it was born (physics.max_displacement "
+              << settings_.max_displacement << ") at step " << steps_;
+      fail(EvalStatus::exploded, message.str());
+      return;
+    }
+    previous_position_[i] = position;
+  }
+}
+
+void Simulation::step(bool controller_on) {
+  if (status_ != EvalStatus::ok)
+    return;
+
+  // sense, think: drives clamped to [-1, 1] (non-finite ones to 0)
+  readSensors();
+  if (controller_on && controller_) {
+    controller_->step(sensors_, drives_);
+    for (std::size_t e = 0; e < drives_.size(); ++e)
+      commands_[e] = std::isfinite(drives_[e]) ? std::clamp(drives_[e], -1.0, 1.0) : 0.0;
+  }
+
+  // act, then watch
+  world_->step(controller_on && controller_ ? std::span<const double>(commands_)
+                                            : std::span<const double>());
+  ++steps_;
+  monitor();
+}
+
+Vec3 Simulation::centerOfMass() const {
+  Vec3 weighted;
+  double mass = 0;
+  for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
+    Vec3 position = world_->partPosition(static_cast<int>(i));
+    weighted = weighted + position * plan_.parts[i].mass;
+    mass += plan_.parts[i].mass;
+  }
+  return mass > 0 ? weighted * (1.0 / mass) : weighted;
+}
+
+double Simulation::lowestPoint() const {
+  return world_->lowestPoint();
+}
+
+void Simulation::partPoses(std::vector<Transform>& poses) const {
+  poses.resize(plan_.parts.size());
+  for (std::size_t i = 0; i < plan_.parts.size(); ++i)
+    poses[i] = world_->partPose(static_cast<int>(i));
+}
+
+}  // namespace cambrian

@@ -1,0 +1,85 @@
+// cambrian: one creature living in a world — sensors read, the controller stepped, its commands
+// clamped and applied, the world stepped, the monitors watching. The world and the controller
+// are plug-ins held by interface.
+#pragma once
+
+#include "cambrian/body_plan.hpp"
+#include "cambrian/controller.hpp"
+#include "cambrian/math.hpp"
+#include "cambrian/outcome.hpp"
+
+#include "physics/environment.hpp"
+#include "physics/physics_settings.hpp"
+#include "physics/world.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cambrian {
+
+/// A creature (its body plan and controller plan) in a world of its own, built by the world
+/// named physics.world. The creature is born resting on the ground (lowest point `birth_height`
+/// m above it). A creature that cannot be born has status() invalid_body or self_penetration
+/// and stepping it does nothing. Single-threaded; evaluations are independent.
+class Simulation {
+ public:
+  /// `plan`, `environment` and `controller` must outlive the simulation; `controller` may be null
+  /// (nothing drives the effectors).
+  Simulation(const BodyPlan& plan, const ControllerPlan* controller, const Environment& environment,
+             const PhysicsSettings& settings, double birth_height = 0);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// One fixed step: sensors -> controller (when on) -> commands -> world step -> monitors.
+  /// Does nothing once status() is not ok. No heap allocation.
+  void step(bool controller_on);
+  /// ok while every rule holds; otherwise the first rule broken.
+  EvalStatus status() const { return status_; }
+  /// Detail for a non-ok status.
+  const std::string& message() const { return message_; }
+  /// Steps taken so far.
+  std::uint64_t steps() const { return steps_; }
+  /// The fixed time step, s.
+  double timeStep() const { return settings_.time_step; }
+  /// Simulated time, s.
+  double time() const { return static_cast<double>(steps_) * settings_.time_step; }
+
+  /// Mass-weighted centre of the parts, world frame, m.
+  Vec3 centerOfMass() const;
+  /// Height of the creature's lowest point above the ground, m.
+  double lowestPoint() const;
+  /// World pose of every part (BodyPlan order).
+  void partPoses(std::vector<Transform>& poses) const;
+  /// The body plan.
+  const BodyPlan& plan() const { return plan_; }
+  /// The world (for tasks that read the environment's objects).
+  const World& world() const { return *world_; }
+  /// The sensor values of the last step (BodyPlan sensor order).
+  const std::vector<double>& sensors() const { return sensors_; }
+  /// The commands in [-1, 1] of the last step with the controller on (BodyPlan effector order).
+  const std::vector<double>& commands() const { return commands_; }
+  /// The controller (null when the creature has none).
+  const Controller* controller() const { return controller_.get(); }
+
+ private:
+  void readSensors();
+  void monitor();
+  void fail(EvalStatus status, std::string message);
+
+  const BodyPlan& plan_;
+  const Environment& environment_;
+  PhysicsSettings settings_;
+  std::unique_ptr<World> world_;
+  std::unique_ptr<Controller> controller_;
+  EvalStatus status_ = EvalStatus::ok;
+  std::string message_;
+  std::uint64_t steps_ = 0;
+
+  std::vector<double> sensors_, drives_, commands_;
+  std::vector<Vec3> birth_position_, previous_position_;
+};
+
+}  // namespace cambrian

@@ -1,0 +1,79 @@
+// cambrian: physics worlds as plug-ins. A World holds one creature (a BodyPlan) in an
+// environment and steps it; the Bullet Featherstone multibody world is the first, a constrained
+// rigid-body world will be the second (physics.world). Everything a task, a sensor or a monitor
+// reads goes through this interface.
+#pragma once
+
+#include "cambrian/body_plan.hpp"
+#include "cambrian/math.hpp"
+#include "cambrian/outcome.hpp"
+
+#include "physics/environment.hpp"
+#include "physics/physics_settings.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace cambrian {
+
+/// One creature in a world of its own. Single-threaded; nothing shared between instances.
+class World {
+ public:
+  virtual ~World() = default;
+
+  /// ok when the creature was born; otherwise why not: invalid_body for a plan this world cannot
+  /// build (the message says what and which world can), self_penetration for parts overlapping
+  /// at birth.
+  virtual EvalStatus birthStatus() const = 0;
+  /// Detail for a non-ok birth status.
+  virtual const std::string& birthMessage() const = 0;
+
+  /// One fixed time step: joint commands in [-1, 1] (one per BodyPlan effector; empty: the
+  /// controller is off) applied through the substeps, then the step itself.
+  virtual void step(std::span<const double> commands) = 0;
+
+  /// World position of part `part`'s centre, m.
+  virtual Vec3 partPosition(int part) const = 0;
+  /// World pose of part `part`.
+  virtual Transform partPose(int part) const = 0;
+  /// Position of degree of freedom `dof` of the joint between `part` and its parent (radians,
+  /// prismatic: m); 0 for a fixed joint.
+  virtual double jointPosition(int part, int dof) const = 0;
+  /// Per part: 1 when it touches anything (after the last step), else 0.
+  virtual const std::vector<std::uint8_t>& contacts() = 0;
+  /// The unit direction from part `part` towards the world point `point`, in the part's frame.
+  virtual Vec3 directionInPart(int part, Vec3 point) const = 0;
+  /// Height of the creature's lowest point above z = 0, m.
+  virtual double lowestPoint() const = 0;
+  /// World pose of free object `object` of the environment (Environment::objects order).
+  virtual Transform objectPose(int object) const = 0;
+};
+
+/// Makes a world of one kind: the plan, the environment, the physics settings and the height of
+/// the creature's lowest point above the ground at birth.
+using WorldFactory = std::function<std::unique_ptr<World>(
+    const BodyPlan&, const Environment&, const PhysicsSettings&, double birth_height)>;
+
+/// A registered world kind.
+struct WorldKind {
+  std::string name;     ///< physics.world = NAME
+  std::string summary;  ///< one line for --help
+  WorldFactory make;
+};
+
+/// Every registered world kind, in registration order.
+const std::vector<WorldKind>& worldKinds();
+/// The names of every registered world.
+std::vector<std::string> worldNames();
+/// "a | b" for help texts.
+std::string worldNamesText();
+/// The world named `physics.world` holding `plan` in `environment`, its lowest point
+/// `birth_height` m above the ground. Throws ConfigError for an unknown name.
+std::unique_ptr<World> makeWorld(const BodyPlan& plan, const Environment& environment,
+                                 const PhysicsSettings& physics, double birth_height = 0);
+
+}  // namespace cambrian

@@ -1,0 +1,408 @@
+// cambrian: the run driver — rank 0's loop over generations, with the history, checkpoints and
+// resume, progress lines and the tables.
+#include "run/evolution_run.hpp"
+
+#include "cambrian/error.hpp"
+#include "cambrian/version.hpp"
+
+#include "core/cpu_time.hpp"
+#include "core/test_kill.hpp"
+#include "evolution/breeder.hpp"
+#include "evolution/statistics.hpp"
+#include "physics/physics_settings.hpp"
+#include "run/resume.hpp"
+#include "run/tables.hpp"
+#include "store/checkpoint.hpp"
+#include "store/history.hpp"
+#include "store/run_lock.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <ostream>
+
+namespace cambrian {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// h:mm:ss
+std::string clockText(double seconds) {
+  auto total = static_cast<long long>(seconds + 0.5);
+  char text[32];
+  std::snprintf(text, sizeof text, "%lld:%02lld:%02lld", total / 3600, (total / 60) % 60,
+                total % 60);
+  return text;
+}
+
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// the output directory
+void makeOutputDirectory(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error)
+    throw Error(ExitCode::output_file, dir + ": cannot create directory: " + error.message());
+}
+
+// an individual as the tables keep it: the record without its genome (the history has it)
+Individual tableRecord(Individual individual) {
+  individual.genome = Genotype();
+  return individual;
+}
+
+// individuals.tsv and generations.tsv, atomically
+void writeTables(const std::string& dir, const RunResult& result,
+                 const std::vector<MeasureInfo>& measures) {
+  makeOutputDirectory(dir);
+  std::string individuals = individualsTsvHeader(measures);
+  for (const Individual& r : result.individuals)
+    individuals += individualsTsvRow(r, measures);
+  writeTextFileAtomically(dir + "/individuals.tsv", individuals);
+  std::string generations = generationsTsvHeader();
+  for (const GenerationRecord& r : result.generations)
+    generations += generationsTsvRow(r);
+  writeTextFileAtomically(dir + "/generations.tsv", generations);
+}
+
+// one run, from its output directory's state to its tables
+class EvolutionRun {
+ public:
+  EvolutionRun(const EvolutionSettings& settings, const Encoding& encoding,
+               const std::vector<Genotype>& seeds, PopulationEvaluator& evaluator,
+               const RunSettings& run, std::ostream& out)
+      : settings_(settings),
+        seeds_(seeds),
+        evaluator_(evaluator),
+        run_(run),
+        out_(out),
+        breeder_(settings, encoding),
+        total_(static_cast<std::uint64_t>(std::max(settings.generations, 0))) {
+    setTestKillPoint(run.test_kill_at);
+    if (run.viable)
+      breeder_.setViabilityCheck(run.viable);
+  }
+
+  RunResult run() {
+    openOutput();
+    std::string stop_reason;
+    std::uint64_t g = start_;
+    for (; g < total_; ++g) {
+      // a clean stop: the last generation written and checkpointed, then out
+      stop_reason = stopReason(g);
+      if (!stop_reason.empty())
+        break;
+      runGeneration(g);
+    }
+
+    // the last generation into the history, checkpointed (a resume that stops at once has none)
+    finishPending(true);
+
+    // digest, timings and the tables
+    result_.stopped = !stop_reason.empty();
+    result_.next_generation = std::max(g, start_);
+    if (result_.stopped)
+      out_ << "cambrian evolve: " << stop_reason << " after " << result_.next_generation
+           << " generation(s); run the same command again to continue from "
+           << checkpointPath(run_.out_dir) << std::endl;
+    result_.digest = digest_.hex();
+    result_.rank0_cpu_seconds = processCpuSeconds() - cpu_start_;
+    result_.wall_seconds = secondsSince(run_start_);
+    if (history_)
+      history_->close();
+    writeTables(run_.out_dir, result_, run_.measures);
+    return std::move(result_);
+  }
+
+ private:
+  // the history's provenance (the settings hash leaves out run-only settings)
+  HistoryAttributes historyAttributes() const {
+    HistoryAttributes attributes;
+    attributes.config_text = run_.config_text;
+    attributes.config_hash = resultConfigHash(run_.config_text, run_.run_only);
+    attributes.run_only_settings.assign(run_.run_only.begin(), run_.run_only.end());
+    attributes.seed = settings_.seed;
+    attributes.rank_count = run_.rank_count;
+    attributes.bullet_precision = bulletPrecision();
+    return attributes;
+  }
+
+  // the output directory locked, then a checkpoint to continue from (checked before anything is
+  // overwritten) or a fresh history
+  void openOutput() {
+    if (!run_.history)
+      return;
+    makeOutputDirectory(run_.out_dir);
+    std::string warning;
+    lock_.emplace(run_.out_dir, &warning);
+    if (!warning.empty())
+      out_ << "cambrian evolve: warning: " << warning << std::endl;
+    std::optional<CheckpointState> checkpoint;
+    if (!run_.fresh)
+      checkpoint = findCheckpoint(run_.out_dir);
+    if (checkpoint) {
+      resume(std::move(*checkpoint));
+      return;
+    }
+
+    // nothing to continue from: stale checkpoint files go, the history starts empty
+    std::error_code error;
+    if (!run_.fresh && std::filesystem::exists(run_.out_dir + "/history.h5", error))
+      out_ << "cambrian evolve: no checkpoint in " << run_.out_dir << ", starting fresh"
+           << std::endl;
+    removeCheckpoints(run_.out_dir);
+    history_ = std::make_unique<HistoryWriter>(
+        run_.out_dir + "/history.h5", historyAttributes(), run_.measures,
+        historyChunkRows(static_cast<std::uint64_t>(settings_.population)));
+  }
+
+  // continues from `checkpoint`: the settings checked, the history cut back to it, the records
+  // kept, the breeder and digest state restored
+  void resume(CheckpointState checkpoint) {
+    const std::string path = checkpointPath(run_.out_dir);
+    checkResumeSettings(path, checkpoint.config_text, run_.config_text, run_.default_config_text,
+                        run_.run_only);
+    // another build may evaluate creatures differently: allowed, but said
+    if (checkpoint.cambrian_version != kVersion || checkpoint.git_hash != kGitHash)
+      out_ << "cambrian evolve: warning: " << path << " was written by cambrian "
+           << checkpoint.cambrian_version << " (git " << checkpoint.git_hash << "), this is "
+           << kVersion << " (git " << kGitHash
+           << "): the run continues exactly only if both evaluate and breed alike" << std::endl;
+    start_ = checkpoint.next_generation;
+    out_ << "cambrian evolve: resuming from " << path << " at generation " << start_ << " ("
+         << start_ << " generation(s) done, written by a run of " << checkpoint.rank_count
+         << " rank(s))" << std::endl;
+    HistoryRows kept;
+    try {
+      history_ =
+          resumeHistory(run_.out_dir + "/history.h5", start_, historyAttributes(), run_.measures,
+                        kept, historyChunkRows(static_cast<std::uint64_t>(settings_.population)));
+    } catch (const InputError& e) {
+      throw Error(ExitCode::checkpoint, std::string(e.what()) +
+                                            " (needed to resume from checkpoint.h5); "
+                                            "`cambrian evolve --fresh` starts over");
+    }
+    for (Individual& row : kept.individuals)
+      result_.individuals.push_back(tableRecord(std::move(row)));
+    for (const GenerationRecord& row : kept.generations) {
+      result_.generations.push_back(row);
+      walls_.push_back(row.wall_seconds - row.checkpoint_seconds);
+    }
+    breeder_.setNextId(checkpoint.next_id);
+    digest_ = RunDigest(checkpoint.digest);
+    last_ = std::move(checkpoint.population);
+    checkpointed_ = start_;
+    result_.resumed = true;
+  }
+
+  // the last evaluated generation's checkpoint (`next_id` as it was when that generation ended,
+  // `digest` over every generation up to it); returns the seconds it took
+  double writeRunCheckpoint(std::uint64_t next_generation, std::uint64_t next_id) {
+    auto begin = Clock::now();
+    CheckpointState state;
+    state.config_text = run_.config_text;
+    state.config_hash = resultConfigHash(run_.config_text, run_.run_only);
+    state.seed = settings_.seed;
+    state.next_generation = next_generation;
+    state.next_id = next_id;
+    state.digest = digest_.value();
+    state.rank_count = run_.rank_count;
+    state.population = *last_;
+    writeCheckpoint(run_.out_dir, state, [&](const std::string& stage) {
+      testKillPoint("checkpoint_" + stage, next_generation - 1);
+    });
+    testKillPoint("checkpoint_done", next_generation - 1);
+    double seconds = std::max(secondsSince(begin), 1e-9);
+    checkpoint_seconds_max_ = std::max(checkpoint_seconds_max_, seconds);
+    checkpointed_ = next_generation;
+    checkpoint_time_ = Clock::now();
+    return seconds;
+  }
+
+  // a generation's times run from the start of its breeding to the start of the next one's (the
+  // last one's: to the end of its history append and checkpoint), so consecutive rows tile the
+  // run; its serial time is what of that lies outside its evaluation span
+  void closeTimes(GenerationRecord& record) const {
+    record.wall_seconds = secondsSince(generation_start_);
+    record.rank0_cpu_seconds = processCpuSeconds() - generation_cpu_start_;
+    record.rank0_serial_seconds =
+        std::max(0.0, record.wall_seconds - record.evaluation_span_seconds);
+  }
+
+  // the last evaluated generation into the history, with its checkpoint when one is due: while
+  // the next generation evaluates (the workers never wait for the file system), or at the end or
+  // a clean stop, when nothing is left to overlap
+  void finishPending(bool final_write) {
+    if (!pending_)
+      return;
+    // the run digest over it and the freeing of the generation before: a millisecond or two of
+    // hashing and freeing that the workers need not wait for either
+    digest_.add(*last_);
+    retired_.reset();
+    GenerationRecord& record = result_.generations[pending_->record];
+    record.distinct_genomes = distinctGenomes(*last_);
+    if (!history_) {
+      pending_.reset();
+      return;
+    }
+    if (final_write)
+      closeTimes(record);
+    std::uint64_t g = record.generation;
+    history_->appendGeneration(last_->individuals, record);
+    testKillPoint("history", g);
+
+    // a checkpoint every checkpoint_every generations or checkpoint_minutes, after the first
+    // (a history never holds generations without one for long) and at the end
+    bool due = final_write || g == 0 || g + 1 == total_ ||
+               (run_.checkpoint_every > 0 &&
+                g + 1 - checkpointed_ >= static_cast<std::uint64_t>(run_.checkpoint_every)) ||
+               (run_.checkpoint_minutes > 0 &&
+                secondsSince(checkpoint_time_) >= run_.checkpoint_minutes * 60);
+    record.checkpoint_seconds = due ? writeRunCheckpoint(g + 1, pending_->next_id) : 0;
+    // the last generation's times include its append and checkpoint
+    if (final_write)
+      closeTimes(record);
+    history_->completeLastGeneration(record);
+    pending_.reset();
+  }
+
+  // why the run should stop before generation g ("" to go on)
+  std::string stopReason(std::uint64_t g) const {
+    if (run_.stop_requested && run_.stop_requested())
+      return std::string("stopped by ") + (run_.stop_reason ? run_.stop_reason() : "a signal");
+    if (run_.max_hours > 0 && !walls_.empty()) {
+      // the slowest of the last five generations plus the slowest checkpoint must still fit
+      double predicted =
+          *std::max_element(walls_.end() - std::min<std::size_t>(walls_.size(), 5), walls_.end()) +
+          checkpoint_seconds_max_;
+      double limit = run_.max_hours * 3600;
+      if (secondsSince(run_start_) + predicted > limit) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "stopped before the --max-hours %g limit (generation %llu would need about "
+                      "%.1f s, %.1f s are left)",
+                      run_.max_hours, static_cast<unsigned long long>(g), predicted,
+                      std::max(0.0, limit - secondsSince(run_start_)));
+        return text;
+      }
+    }
+    return "";
+  }
+
+  // breeds generation g (the initial population for g = 0), evaluates it while the previous
+  // generation goes to the history, and records it
+  void runGeneration(std::uint64_t g) {
+    // the previous generation ends here: its times are complete
+    if (pending_) {
+      GenerationRecord& previous = result_.generations[pending_->record];
+      closeTimes(previous);
+      walls_.back() = previous.wall_seconds;
+    }
+    generation_start_ = Clock::now();
+    generation_cpu_start_ = processCpuSeconds();
+
+    Population population =
+        last_ ? breeder_.nextGeneration(*last_) : breeder_.initialPopulation(seeds_);
+    EvaluationSpan span =
+        evaluator_.evaluate(population, settings_.seed, [&] { finishPending(false); });
+
+    // summarise in id order (the times so far; closed when the next generation starts)
+    GenerationRecord record;
+    record.generation = population.generation;
+    record.stats = computeStats(population);
+    record.evaluations = span.evaluations;
+    record.workers = span.workers;
+    record.evaluation_span_seconds = span.span_seconds;
+    record.rank0_dispatch_seconds = span.dispatch_seconds;
+    record.worker_busy_seconds = span.busy_seconds;
+    record.worker_idle_seconds =
+        std::max(0.0, span.workers * span.span_seconds - span.busy_seconds);
+    for (const Individual& individual : population.individuals)
+      result_.individuals.push_back(tableRecord(individual));
+    closeTimes(record);
+    retired_ = std::move(last_);
+    last_ = std::move(population);
+    result_.generations.push_back(record);
+    walls_.push_back(record.wall_seconds);
+    pending_ = Pending{result_.generations.size() - 1, breeder_.nextId()};
+    progress(g, record);
+  }
+
+  // the progress line and, verbose, its details
+  void progress(std::uint64_t g, const GenerationRecord& record) const {
+    double elapsed = secondsSince(run_start_);
+    double eta =
+        elapsed / static_cast<double>(g + 1 - start_) * static_cast<double>(total_ - g - 1);
+    if (!run_.quiet)
+      out_ << progressLine(record, settings_.generations, eta) << std::endl;
+    if (run_.verbose) {
+      char detail[256];
+      std::snprintf(
+          detail, sizeof detail,
+          "    evaluated %llu  span %.3f s  busy %.3f s  idle %.3f s  rank0 serial %.4f s  "
+          "failed %zu  best id %llu",
+          static_cast<unsigned long long>(record.evaluations), record.evaluation_span_seconds,
+          record.worker_busy_seconds, record.worker_idle_seconds, record.rank0_serial_seconds,
+          record.stats.failed, static_cast<unsigned long long>(record.stats.best_id));
+      out_ << detail << std::endl;
+    }
+  }
+
+  // the last evaluated generation until it is in the history
+  struct Pending {
+    std::size_t record = 0;  // index into result_.generations
+    std::uint64_t next_id = 0;
+  };
+
+  const EvolutionSettings& settings_;
+  const std::vector<Genotype>& seeds_;
+  PopulationEvaluator& evaluator_;
+  const RunSettings& run_;
+  std::ostream& out_;
+  Breeder breeder_;
+  const std::uint64_t total_;
+  double cpu_start_ = processCpuSeconds();
+  Clock::time_point run_start_ = Clock::now();
+
+  RunResult result_;
+  RunDigest digest_;
+  std::optional<RunLock> lock_;
+  std::unique_ptr<HistoryWriter> history_;
+  std::optional<Population> last_;     // the last evaluated generation
+  std::optional<Population> retired_;  // the generation before `last_`, freed in the same slot
+  std::optional<Pending> pending_;
+  std::vector<double> walls_;  // generation wall times, for the max-hours prediction
+  std::uint64_t start_ = 0;
+  std::uint64_t checkpointed_ = 0;
+  Clock::time_point checkpoint_time_ = Clock::now();
+  double checkpoint_seconds_max_ = 0;
+  Clock::time_point generation_start_ = Clock::now();
+  double generation_cpu_start_ = 0;
+};
+
+}  // namespace
+
+std::string progressLine(const GenerationRecord& r, int generations, double eta_seconds) {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "gen %llu/%d  best %.6g  mean %.6g  median %.6g  evals/s %.1f  util %.0f%%  "
+                "eta %s",
+                static_cast<unsigned long long>(r.generation + 1), generations, r.stats.best,
+                r.stats.mean, r.stats.median, r.evaluationsPerSecond(), 100 * r.utilisation(),
+                clockText(eta_seconds).c_str());
+  return line;
+}
+
+RunResult runEvolution(const EvolutionSettings& settings, const Encoding& encoding,
+                       const std::vector<Genotype>& seeds, PopulationEvaluator& evaluator,
+                       const RunSettings& run, std::ostream& out) {
+  return EvolutionRun(settings, encoding, seeds, evaluator, run, out).run();
+}
+
+}  // namespace cambrian

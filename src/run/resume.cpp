@@ -1,0 +1,57 @@
+// cambrian: the resume check and the settings hash.
+#include "run/resume.hpp"
+
+#include "cambrian/error.hpp"
+
+#include "core/hash.hpp"
+#include "core/settings.hpp"
+
+namespace cambrian {
+
+std::string resultConfigText(const std::string& config_text,
+                             const std::set<std::string>& run_only) {
+  return iniTextWithout(config_text, run_only);
+}
+
+std::string resultConfigHash(const std::string& config_text,
+                             const std::set<std::string>& run_only) {
+  return hashText(resultConfigText(config_text, run_only));
+}
+
+void checkResumeSettings(const std::string& path, const std::string& saved_config_text,
+                         const std::string& current_config_text,
+                         const std::string& default_config_text,
+                         const std::set<std::string>& run_only) {
+  std::map<std::string, std::string> saved = iniValues(saved_config_text);
+  std::map<std::string, std::string> current = iniValues(current_config_text);
+  std::map<std::string, std::string> defaults = iniValues(default_config_text);
+
+  // every key of either side, in order
+  std::set<std::string> keys;
+  for (const auto& [key, value] : saved)
+    keys.insert(key);
+  for (const auto& [key, value] : current)
+    keys.insert(key);
+  for (const std::string& key : keys) {
+    if (run_only.count(key))
+      continue;
+    auto old_value = saved.find(key);
+    auto new_value = current.find(key);
+    // a key added since the checkpoint, left at its default: the old behaviour
+    auto default_value = defaults.find(key);
+    if (old_value == saved.end() && new_value != current.end() && default_value != defaults.end() &&
+        default_value->second == new_value->second)
+      continue;
+    std::string before = old_value == saved.end() ? "(absent)" : "'" + old_value->second + "'";
+    std::string after = new_value == current.end() ? "(absent)" : "'" + new_value->second + "'";
+    if (before != after) {
+      throw Error(ExitCode::checkpoint,
+                  path + ": setting " + key + " was " + before +
+                      " when the checkpoint was written and is " + after +
+                      " now; it changes results, so the run cannot continue with it (restore the "
+                      "old value, or start over with --fresh)");
+    }
+  }
+}
+
+}  // namespace cambrian

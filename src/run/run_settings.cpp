@@ -1,0 +1,43 @@
+// cambrian: the [run] keys.
+#include "run/run_settings.hpp"
+
+#include "cambrian/error.hpp"
+
+#include "core/settings.hpp"
+#include "core/test_kill.hpp"
+
+#include <cmath>
+
+namespace cambrian {
+
+void RunSettings::declareSettings(SettingsSchema& s) {
+  RunSettings& r = *this;
+  s.describeSection("run", "[run] this run");
+  s.add("run.out", r.out_dir, "output directory (history.h5, individuals.tsv, generations.tsv)")
+      .runOnly();
+  s.add("run.quiet", r.quiet, "no progress lines, only the digest").runOnly();
+  s.add("run.verbose", r.verbose, "timing details after each progress line").runOnly();
+  s.add("run.checkpoint_every", r.checkpoint_every,
+        "write DIR/checkpoint.h5 every this many generations (0 = no generation cadence; a "
+        "checkpoint always follows the last generation and precedes a clean stop)")
+      .require([&r] { return r.checkpoint_every >= 0; }, "must be >= 0")
+      .runOnly();
+  s.add("run.checkpoint_minutes", r.checkpoint_minutes,
+        "... or when this many minutes passed since the last one, whichever comes first (0 = "
+        "off)")
+      .require([&r] { return r.checkpoint_minutes >= 0 && std::isfinite(r.checkpoint_minutes); },
+               "must be >= 0")
+      .runOnly();
+  s.add("run.max_hours", r.max_hours,
+        "stop cleanly (checkpoint, exit 0) before this many hours of wall time: no generation "
+        "starts that the measured times say would not end in time (0 = no limit)")
+      .require([&r] { return r.max_hours >= 0 && std::isfinite(r.max_hours); }, "must be >= 0")
+      .runOnly();
+  s.add("run.test_kill_at", r.test_kill_at,
+        "testing: rank 0 SIGKILLs itself at POINT:GENERATION, POINT one of evaluation, history, "
+        "checkpoint_write, checkpoint_rename, checkpoint_done")
+      .runOnly();
+  s.addCheck([&r] { setTestKillPoint(r.test_kill_at); });
+}
+
+}  // namespace cambrian

@@ -1,0 +1,43 @@
+// cambrian: where a run writes, how much it says and when it checkpoints and stops (the [run]
+// keys), plus what the run driver is handed by the command that starts it.
+#pragma once
+
+#include "cambrian/outcome.hpp"
+
+#include "evolution/breeder.hpp"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace cambrian {
+
+class SettingsSchema;
+
+/// Where a run writes and how much it says.
+struct RunSettings {
+  std::string out_dir = "cambrian-run";  ///< history.h5, individuals.tsv, generations.tsv go here
+  bool quiet = false;                    ///< no progress lines, only the digest
+  bool verbose = false;                  ///< timing details after each progress line
+  int checkpoint_every = 0;              ///< checkpoint every this many generations (0: no cadence)
+  double checkpoint_minutes = 1;  ///< ... or when this many minutes passed since the last (0: off)
+  double max_hours = 0;           ///< stop cleanly before this wall time (0: no limit)
+  std::string test_kill_at;       ///< testing: "POINT:GENERATION" where rank 0 SIGKILLs itself
+
+  // handed over by the command (not settings)
+  ViabilityCheck viable;    ///< birth test for new individuals (none: accept all), rank 0 only
+  bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
+  bool fresh = false;       ///< ignore and remove an existing checkpoint, start over
+  std::string config_text;  ///< the effective settings as INI text, stored in the history
+  std::string default_config_text;     ///< every setting at its default, same form (resume check)
+  std::set<std::string> run_only;      ///< keys that change no result (the schema's run-only keys)
+  std::vector<MeasureInfo> measures;   ///< the task's measures: history and table columns
+  int rank_count = 1;                  ///< MPI ranks of the run, stored in the history
+  bool (*stop_requested)() = nullptr;  ///< polled at generation ends: true stops cleanly
+  const char* (*stop_reason)() = nullptr;  ///< what asked for the stop (for the message)
+
+  /// Declares the [run] keys (all run-only), bound to this object, with their ranges.
+  void declareSettings(SettingsSchema& schema);
+};
+
+}  // namespace cambrian

@@ -1,0 +1,176 @@
+// cambrian: an evaluation's phases, the rest rule, the wall-clock bound and the observer.
+#include "tasks/episode.hpp"
+
+#include "core/settings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cambrian {
+
+namespace {
+
+// whole steps in a phase of `seconds`
+std::uint64_t stepsIn(double seconds, double time_step) {
+  return static_cast<std::uint64_t>(std::llround(seconds / time_step));
+}
+
+}  // namespace
+
+void EpisodeSettings::declareSettings(SettingsSchema& s) {
+  EpisodeSettings& t = *this;
+  auto seconds = [](double v) { return v >= 0 && v <= 3600; };
+  s.add("task.evaluation_time", t.evaluation_time, "measured time, s")
+      .require([&t] { return t.evaluation_time > 0 && t.evaluation_time <= 3600; },
+               "must be in (0, 3600] s");
+  s.add("task.settle_time", t.settle_time, "brain off before the trial, s")
+      .require([&t, seconds] { return seconds(t.settle_time); }, "must be in [0, 3600] s");
+  s.add("task.trial_time", t.trial_time, "brain on, unmeasured, s")
+      .require([&t, seconds] { return seconds(t.trial_time); }, "must be in [0, 3600] s");
+  s.add("task.resettle_time", t.resettle_time, "brain off again before measuring, s")
+      .require([&t, seconds] { return seconds(t.resettle_time); }, "must be in [0, 3600] s");
+  s.add("task.rest_check", t.rest_check,
+        "Chaumont's rest rule: each settle phase lasts until the body is at rest (at least "
+        "task.settle_time / task.resettle_time); no rest within task.settle_max_time: unstable");
+  s.add("task.rest_speed", t.rest_speed,
+        "rest check: largest speed of any part's centre of mass counted as rest, m/s")
+      .require([&t] { return t.rest_speed > 0 && std::isfinite(t.rest_speed); }, "must be > 0 m/s");
+  s.add("task.rest_time", t.rest_time, "rest check: how long the body must stay at rest, s")
+      .require([&t, seconds] { return seconds(t.rest_time); }, "must be in [0, 3600] s");
+  s.add("task.settle_max_time", t.settle_max_time,
+        "rest check: the longest a settle phase may last, s")
+      .require([&t, seconds] { return seconds(t.settle_max_time); }, "must be in [0, 3600] s")
+      // with the rest check on, a settle phase must have room for its minimum and for the rest
+      .require(
+          [&t] {
+            return !t.rest_check ||
+                   t.settle_max_time >= std::max({t.settle_time, t.resettle_time, t.rest_time});
+          },
+          "must be >= task.settle_time, task.resettle_time and task.rest_time when "
+          "task.rest_check is on");
+}
+
+Episode::Episode(const Creature& creature, const Environment& environment,
+                 const PhysicsSettings& physics, const EpisodeSettings& settings,
+                 Clock::time_point start, FrameObserver* observer)
+    : creature_(creature),
+      settings_(settings),
+      simulation_(creature.body, creature.controller.get(), environment, physics),
+      observer_(observer) {
+  const BodyPlan& plan = creature.body;
+  outcome_.parts = static_cast<int>(plan.parts.size());
+  outcome_.joints = plan.jointCount();
+  outcome_.neurons = creature.controller ? creature.controller->neuronCount() : 0;
+  bounded_ = physics.max_wall_seconds > 0;
+  deadline_ = start + std::chrono::duration_cast<Clock::duration>(
+                          std::chrono::duration<double>(physics.max_wall_seconds));
+
+  // the observer sees the body at birth, then every stride steps
+  if (observer_) {
+    stride_ = std::max<std::uint64_t>(1, observer_->frameStride());
+    observer_->begin(plan, physics.time_step);
+    show(EvalPhase::settle);
+  }
+}
+
+void Episode::show(EvalPhase phase) {
+  simulation_.partPoses(poses_);
+  EvalFrame frame;
+  frame.step = simulation_.steps();
+  frame.time = simulation_.time();
+  frame.phase = phase;
+  frame.center_of_mass = simulation_.centerOfMass();
+  frame.poses = poses_;
+  observer_->frame(frame);
+}
+
+bool Episode::pastDeadline() const {
+  return bounded_ && Clock::now() > deadline_;
+}
+
+Episode::PhaseEnd Episode::runSteps(std::uint64_t steps, bool controller_on, EvalPhase phase,
+                                    std::initializer_list<Jury*> juries, bool rest) {
+  // the rest check: every part's centre slower than rest_speed for rest_time in a row
+  const double dt = simulation_.timeStep();
+  const std::uint64_t rest_needed = stepsIn(settings_.rest_time, dt);
+  const std::uint64_t last = rest ? std::max(steps, stepsIn(settings_.settle_max_time, dt)) : steps;
+  std::uint64_t run = 0, longest = 0;
+  double fastest = 0;
+  std::vector<Transform> rest_poses;
+  if (rest) {
+    simulation_.partPoses(rest_poses);
+    previous_.resize(rest_poses.size());
+    for (std::size_t i = 0; i < rest_poses.size(); ++i)
+      previous_[i] = rest_poses[i].position;
+  }
+  for (Jury* jury : juries)
+    jury->begin(simulation_);
+
+  for (std::uint64_t s = 0; s < last; ++s) {
+    simulation_.step(controller_on);
+    if (simulation_.status() != EvalStatus::ok)
+      return PhaseEnd::stopped;
+    for (Jury* jury : juries)
+      jury->observe(simulation_);
+    // a frame for the observer, if any (it only reads)
+    if (observer_ && simulation_.steps() % stride_ == 0)
+      show(phase);
+    // wall-clock bound, looked at every 256 steps
+    if (bounded_ && (simulation_.steps() & 255) == 0 && Clock::now() > deadline_)
+      return PhaseEnd::stopped;
+    // a settle phase with the rest check ends once the body has rested long enough
+    if (rest) {
+      simulation_.partPoses(rest_poses);
+      fastest = 0;
+      for (std::size_t i = 0; i < rest_poses.size(); ++i) {
+        fastest = std::max(fastest, norm(rest_poses[i].position - previous_[i]) / dt);
+        previous_[i] = rest_poses[i].position;
+      }
+      run = fastest <= settings_.rest_speed ? run + 1 : 0;
+      longest = std::max(longest, run);
+      if (run >= rest_needed && s + 1 >= steps)
+        return PhaseEnd::done;
+    }
+  }
+  if (!rest)
+    return PhaseEnd::done;
+
+  // never at rest: unstable
+  std::ostringstream message;
+  message << "not at rest within task.settle_max_time = " << settings_.settle_max_time
+          << " s in the " << phaseName(phase) << " phase: no " << settings_.rest_time
+          << " s (task.rest_time) with every part slower than task.rest_speed = "
+          << settings_.rest_speed << " m/s (longest rest " << longest * dt
+          << " s; fastest part at the end " << fastest << " m/s)";
+  outcome_.status = EvalStatus::unstable;
+  outcome_.message = message.str();
+  outcome_.fitness = kWorstFitness;
+  return PhaseEnd::unstable;
+}
+
+bool Episode::settle(double seconds, EvalPhase phase) {
+  return runSteps(stepsIn(seconds, simulation_.timeStep()), false, phase, {},
+                  settings_.rest_check) == PhaseEnd::done;
+}
+
+bool Episode::run(double seconds, EvalPhase phase, std::initializer_list<Jury*> juries) {
+  return runSteps(stepsIn(seconds, simulation_.timeStep()), true, phase, juries, false) ==
+         PhaseEnd::done;
+}
+
+Outcome Episode::finish() {
+  outcome_.steps = simulation_.steps();
+  if (simulation_.status() != EvalStatus::ok) {
+    outcome_.status = simulation_.status();
+    outcome_.message = simulation_.message();
+    outcome_.fitness = kWorstFitness;
+  } else if (pastDeadline()) {
+    outcome_.status = EvalStatus::timeout;
+    outcome_.message = "evaluation exceeded physics.max_wall_seconds";
+    outcome_.fitness = kWorstFitness;
+  }
+  return outcome_;
+}
+
+}  // namespace cambrian

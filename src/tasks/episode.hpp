@@ -1,0 +1,88 @@
+// cambrian: one evaluation of one body, run phase by phase — the protocol every task with bodies
+// shares: settle (controller off, optionally until at rest, Chaumont et al. 3.3), trial (on,
+// unmeasured), measure (on, juries watching); a wall-clock bound; an optional observer.
+#pragma once
+
+#include "cambrian/evaluate.hpp"
+#include "cambrian/outcome.hpp"
+
+#include "physics/simulation.hpp"
+#include "tasks/juries.hpp"
+
+#include <chrono>
+#include <initializer_list>
+#include <vector>
+
+namespace cambrian {
+
+class SettingsSchema;
+
+/// The evaluation protocol's settings, shared by the tasks with bodies ([task] keys).
+struct EpisodeSettings {
+  double evaluation_time = 10;  ///< s, the measured phase
+  double settle_time = 0.5;     ///< s, controller off before the trial (Chaumont)
+  double trial_time = 1.0;      ///< s, controller on, not measured (Chaumont)
+  double resettle_time = 0.5;   ///< s, controller off again before measuring
+  /// Chaumont et al. 3.3's rest rule: each settle phase (controller off) lasts until every part
+  /// has moved slower than `rest_speed` for `rest_time` in a row (and at least its settle_time or
+  /// resettle_time); a creature not at rest within `settle_max_time` ends `unstable`. Off: the
+  /// settle phases last exactly settle_time and resettle_time.
+  bool rest_check = false;
+  double rest_speed = 0.2;       ///< m/s, fastest part centre of mass at rest (1/300 m per 1/60 s)
+  double rest_time = 0.5;        ///< s of consecutive steps at rest
+  double settle_max_time = 5.0;  ///< s, the longest a settle phase may last with rest_check
+
+  /// Declares the keys, bound to this object, with their ranges.
+  void declareSettings(SettingsSchema& schema);
+};
+
+/// A born creature's evaluation. Phases return false when the evaluation ends (a rule broke, the
+/// wall-clock bound passed, or the body never came to rest); the outcome then says why.
+class Episode {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  /// Builds the world for `creature` in `environment`; the evaluation started at `start` (for
+  /// physics.max_wall_seconds). `observer` (may be null) sees the birth and every stride-th step.
+  Episode(const Creature& creature, const Environment& environment, const PhysicsSettings& physics,
+          const EpisodeSettings& settings, Clock::time_point start, FrameObserver* observer);
+
+  /// Whether the creature was born (status ok after building the world).
+  bool born() const { return simulation_.status() == EvalStatus::ok; }
+  /// A settle phase of `seconds` (controller off); with the rest check, until at rest.
+  bool settle(double seconds, EvalPhase phase);
+  /// `seconds` with the controller on; each jury begins first and observes every step.
+  bool run(double seconds, EvalPhase phase, std::initializer_list<Jury*> juries = {});
+
+  /// The simulation (for juries and task measures).
+  const Simulation& simulation() const { return simulation_; }
+  /// The body.
+  const BodyPlan& plan() const { return creature_.body; }
+  /// The protocol settings.
+  const EpisodeSettings& settings() const { return settings_; }
+  /// The outcome being made: tasks add measures and the fitness.
+  Outcome& outcome() { return outcome_; }
+  /// The outcome with the steps taken and, when a rule broke or time ran out, that status, its
+  /// message and the worst fitness.
+  Outcome finish();
+
+ private:
+  enum class PhaseEnd { done, stopped, unstable };
+  PhaseEnd runSteps(std::uint64_t steps, bool controller_on, EvalPhase phase,
+                    std::initializer_list<Jury*> juries, bool rest);
+  void show(EvalPhase phase);
+  bool pastDeadline() const;
+
+  const Creature& creature_;
+  EpisodeSettings settings_;
+  Simulation simulation_;
+  Outcome outcome_;
+  bool bounded_ = false;
+  Clock::time_point deadline_;
+  FrameObserver* observer_ = nullptr;
+  std::uint64_t stride_ = 1;
+  std::vector<Transform> poses_;  // the observer's and the rest check's pose buffer
+  std::vector<Vec3> previous_;    // the rest check's previous positions
+};
+
+}  // namespace cambrian

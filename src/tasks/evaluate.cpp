@@ -1,0 +1,111 @@
+// cambrian: evaluating one creature — validate, develop, build the world, run the task.
+#include "cambrian/evaluate.hpp"
+
+#include "cambrian/error.hpp"
+#include "cambrian/rng.hpp"
+
+#include "physics/simulation.hpp"
+#include "tasks/episode.hpp"
+#include "tasks/task.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+
+namespace cambrian {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// the failure outcome for a broken rule
+Outcome failure(EvalStatus status, const std::string& message) {
+  Outcome outcome;
+  outcome.status = status;
+  outcome.fitness = kWorstFitness;
+  outcome.message = message;
+  return outcome;
+}
+
+// a developed creature through its task
+Outcome evaluateBody(const Creature& creature, const CreatureSettings& settings,
+                     Clock::time_point start, FrameObserver* observer) {
+  const Task& task = settings.task();
+  Environment environment = settings.environment();
+  task.prepare(environment);
+  Episode episode(creature, environment, settings.physics(), settings.episode(), start, observer);
+  if (episode.born()) {
+    task.run(episode);
+    Outcome& outcome = episode.outcome();
+    if (!std::isfinite(outcome.fitness) || outcome.fitness < 0)
+      outcome.fitness = kWorstFitness;
+  }
+  return episode.finish();
+}
+
+}  // namespace
+
+std::uint64_t evaluationSeed(std::uint64_t run_seed, std::uint64_t id) {
+  Rng rng(run_seed, RngPurpose::evaluation, 0, id);
+  return rng.nextU64();
+}
+
+bool isViable(const Genotype& genome, const CreatureSettings& settings, std::string* reason) {
+  try {
+    const Encoding& encoding = settings.encoding();
+    encoding.validate(genome);
+    Creature creature = encoding.develop(genome);
+    if (creature.body.parts.empty()) {
+      if (reason)
+        *reason = "no parts";
+      return false;
+    }
+    Environment environment = settings.environment();
+    settings.task().prepare(environment);
+    Simulation simulation(creature.body, creature.controller.get(), environment,
+                          settings.physics());
+    if (simulation.status() != EvalStatus::ok) {
+      if (reason)
+        *reason = std::string(statusName(simulation.status())) + ": " + simulation.message();
+      return false;
+    }
+    return true;
+  } catch (const std::exception& e) {
+    if (reason)
+      *reason = e.what();
+    return false;
+  }
+}
+
+Outcome evaluate(const Genotype& genome, const CreatureSettings& settings, std::uint64_t eval_seed,
+                 FrameObserver* observer) {
+  auto start = Clock::now();
+  Outcome outcome;
+  try {
+    const Task& task = settings.task();
+    const Encoding& encoding = settings.encoding();
+    if (!task.needsBody()) {
+      outcome = task.evaluateGenome(genome, encoding, eval_seed);
+    } else {
+      // a genome that breaks a rule never reaches the physics
+      bool valid = true;
+      try {
+        encoding.validate(genome);
+      } catch (const GenomeError& e) {
+        outcome = failure(EvalStatus::invalid_body, e.what());
+        valid = false;
+      }
+      if (valid) {
+        Creature creature = encoding.develop(genome);
+        outcome = creature.body.parts.empty() ? failure(EvalStatus::invalid_body, "no parts")
+                                              : evaluateBody(creature, settings, start, observer);
+      }
+    }
+  } catch (const std::exception& e) {
+    outcome = failure(EvalStatus::failed, e.what());
+  }
+  outcome.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return outcome;
+}
+
+}  // namespace cambrian

@@ -1,0 +1,47 @@
+// cambrian: the distance and height juries and the walk normalisations.
+#include "tasks/juries.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cambrian {
+
+void DistanceJury::begin(const Simulation& simulation) {
+  start_ = simulation.centerOfMass();
+}
+
+double DistanceJury::value(const Simulation& simulation) const {
+  Vec3 moved = simulation.centerOfMass() - start_;
+  return std::sqrt(moved.x * moved.x + moved.y * moved.y);
+}
+
+void HeightJury::begin(const Simulation& simulation) {
+  best_ = simulation.lowestPoint();
+}
+
+void HeightJury::observe(const Simulation& simulation) {
+  best_ = std::max(best_, simulation.lowestPoint());
+}
+
+double chaumontFactor(const BodyPlan& plan, double k) {
+  // C_l: mean summed side length; C_s: mean surface; C_v: mean volume (Chaumont et al. 3.4)
+  double lengths = 0, surfaces = 0, volumes = 0;
+  for (const PartPlan& part : plan.parts) {
+    Vec3 b = part.size;
+    lengths += b.x + b.y + b.z;
+    surfaces += shapeSurface(part.shape, b);
+    volumes += shapeVolume(part.shape, b);
+  }
+  double n = static_cast<double>(plan.parts.size());
+  if (n == 0)
+    return 0;
+  double c_l = lengths / n, c_s = surfaces / n, c_v = volumes / n;
+  return c_v / (c_s * c_l) * std::pow(k, n);
+}
+
+double volumeFactor(const BodyPlan& plan) {
+  double volume = plan.totalVolume();
+  return volume > 0 ? 1.0 / std::cbrt(volume) : 0;
+}
+
+}  // namespace cambrian

@@ -1,0 +1,104 @@
+#!/usr/bin/python3
+"""The house rules of src/, checked on the sources.
+
+1. Modules form a one-way stack: a file of src/M includes headers of M and of the modules listed
+   before M in CAMBRIAN_MODULES (src/CMakeLists.txt) only, public headers (include/cambrian/)
+   counted as the module that owns them (OWNER below; every public header must be listed).
+2. Public headers include public headers and the standard library only.
+3. MPI, HDF5, Bullet and Boost each stay behind their one module (their headers' only includers).
+
+usage: module_order_check.py SOURCE_DIR        exit 1 listing every broken rule
+"""
+
+import pathlib
+import re
+import sys
+
+# the module that owns each public header (a new header must be added here)
+OWNER = {
+    "error.hpp": "core",
+    "math.hpp": "core",
+    "rng.hpp": "core",
+    "outcome.hpp": "core",
+    "version.hpp": "core",
+    "body_plan.hpp": "body",
+    "controller.hpp": "brain",
+    "encoding.hpp": "genome",
+    "encodings.hpp": "encodings",
+    "environment.hpp": "physics",
+    "evaluate.hpp": "tasks",
+}
+
+# third-party headers and the only places allowed to include them (path prefixes under src/)
+CONFINED = [
+    (re.compile(r"^mpi\.h$"), ["parallel/mpi_context.cpp"]),
+    (re.compile(r"^hdf5\.h$|^H5"), ["store/"]),
+    (re.compile(r"^(btBulletDynamicsCommon|BulletDynamics|BulletCollision|LinearMath)"),
+     ["physics/featherstone_world.cpp", "physics/world.cpp"]),
+    (re.compile(r"^boost/"), ["app/"]),
+]
+
+INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
+
+
+def modules(source):
+    text = (source / "src" / "CMakeLists.txt").read_text()
+    match = re.search(r"set\(CAMBRIAN_MODULES([^)]*?)CACHE", text, re.S)
+    if not match:
+        sys.exit("module_order_check: no set(CAMBRIAN_MODULES ...) in src/CMakeLists.txt")
+    return match.group(1).split()
+
+
+def main():
+    source = pathlib.Path(sys.argv[1])
+    order = modules(source)
+    rank = {name: i for i, name in enumerate(order)}
+    problems = []
+
+    # every public header has an owner, and includes nothing private
+    for header in sorted((source / "include" / "cambrian").glob("*.hpp")):
+        if header.name not in OWNER:
+            problems.append(f"include/cambrian/{header.name}: no owning module in OWNER")
+        for kind, name in INCLUDE.findall(header.read_text()):
+            if kind == '"' and not name.startswith("cambrian/"):
+                problems.append(f"include/cambrian/{header.name}: includes the private {name}")
+    for name, owner in OWNER.items():
+        if owner not in rank:
+            problems.append(f"OWNER[{name}] = {owner}: not a module")
+
+    # every source file: its includes stay at or below its module
+    for path in sorted((source / "src").rglob("*")):
+        if path.suffix not in (".cpp", ".hpp"):
+            continue
+        relative = path.relative_to(source / "src").as_posix()
+        module = relative.split("/")[0]
+        if module not in rank:
+            problems.append(f"src/{relative}: in no module of CAMBRIAN_MODULES")
+            continue
+        for kind, name in INCLUDE.findall(path.read_text()):
+            if kind == '"':
+                if name.startswith("cambrian/"):
+                    owner = OWNER.get(name.split("/", 1)[1])
+                else:
+                    owner = name.split("/")[0] if "/" in name else module
+                if owner is None or owner not in rank:
+                    if owner is None:
+                        problems.append(f"src/{relative}: includes {name}, owned by no module")
+                    continue
+                if rank[owner] > rank[module]:
+                    problems.append(f"src/{relative}: module {module} includes {name} of the "
+                                    f"higher module {owner}")
+            for pattern, allowed in CONFINED:
+                if pattern.search(name) and not any(relative.startswith(a) for a in allowed):
+                    problems.append(f"src/{relative}: includes <{name}>, which only "
+                                    f"{', '.join(allowed)} may")
+
+    for problem in problems:
+        print(problem)
+    print(f"module_order_check: {len(order)} modules ({' < '.join(order)}), "
+          f"{len(problems)} problem(s)")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

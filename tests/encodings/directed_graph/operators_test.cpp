@@ -1,0 +1,238 @@
+#include "encodings/directed_graph/operators.hpp"
+
+#include "cambrian/encodings.hpp"
+#include "cambrian/rng.hpp"
+
+#include "encodings/directed_graph/encoding.hpp"
+#include "encodings/directed_graph/genome.hpp"
+#include "encodings/directed_graph/graph.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace cambrian::graph {
+namespace {
+
+// settings with every rate high, so that structure changes often
+MutationSettings aggressive(bool keep_unconnected) {
+  MutationSettings s;
+  s.parameter_rate = 0.5;
+  s.perturbation = 0.5;
+  s.add_node_rate = s.remove_node_rate = 0.5;
+  s.add_connection_rate = s.remove_connection_rate = 0.5;
+  s.repoint_rate = 0.3;
+  s.add_neuron_rate = s.remove_neuron_rate = 0.5;
+  s.keep_unconnected = keep_unconnected;
+  return s;
+}
+
+// repeated mutation (a lineage) stays valid, with both unconnected-node policies
+TEST(Mutate, AlwaysValid) {
+  GenomeLimits limits;
+  for (bool keep : {true, false}) {
+    MutationSettings gentle;
+    gentle.keep_unconnected = keep;
+    for (std::uint64_t lineage = 0; lineage < 100; ++lineage) {
+      Genome g = randomGenome(limits, 71, 0, lineage);
+      for (std::uint64_t generation = 0; generation < 30; ++generation) {
+        Rng rng(71, RngPurpose::variation, generation, lineage);
+        g = mutate(g, limits, generation % 2 ? aggressive(keep) : gentle, rng);
+        ASSERT_NO_THROW(validateGenome(g, limits))
+            << "lineage " << lineage << " generation " << generation;
+        if (!keep) {
+          std::vector<bool> reached = reachableNodes(g);
+          EXPECT_TRUE(std::all_of(reached.begin(), reached.end(), [](bool b) { return b; }));
+        }
+      }
+    }
+  }
+}
+
+// the same Rng key and counter give the same child; another counter usually another child
+TEST(Mutate, Deterministic) {
+  GenomeLimits limits;
+  int differ = 0;
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    Genome parent = randomGenome(limits, 72, 0, i);
+    Rng a(5, RngPurpose::variation, 1, i), b(5, RngPurpose::variation, 1, i);
+    EXPECT_EQ(mutate(parent, limits, aggressive(true), a),
+              mutate(parent, limits, aggressive(true), b));
+    Rng c(5, RngPurpose::variation, 2, i);
+    Rng d(5, RngPurpose::variation, 1, i);
+    if (mutate(parent, limits, aggressive(true), c) != mutate(parent, limits, aggressive(true), d))
+      ++differ;
+  }
+  EXPECT_GT(differ, 190);
+}
+
+// with every rate 0 the child is the parent
+TEST(Mutate, RateZeroReturnsParent) {
+  GenomeLimits limits;
+  MutationSettings none;
+  none.parameter_rate = none.add_node_rate = none.remove_node_rate = 0;
+  none.add_connection_rate = none.remove_connection_rate = none.repoint_rate = 0;
+  none.add_neuron_rate = none.remove_neuron_rate = 0;
+  for (bool keep : {true, false}) {
+    none.keep_unconnected = keep;
+    for (std::uint64_t i = 0; i < 300; ++i) {
+      Genome parent = randomGenome(limits, 73, 0, i);
+      Rng rng(6, RngPurpose::variation, 0, i);
+      EXPECT_EQ(mutate(parent, limits, none, rng), parent);
+    }
+  }
+}
+
+// default settings change something in most children, but not everything
+TEST(Mutate, DefaultSettingsChangeSomething) {
+  GenomeLimits limits;
+  int changed = 0;
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    Genome parent = randomGenome(limits, 74, 0, i);
+    Rng rng(7, RngPurpose::variation, 0, i);
+    Genome child = mutate(parent, limits, MutationSettings{}, rng);
+    if (child != parent)
+      ++changed;
+    EXPECT_EQ(
+        child.nodes[0].neurons.size() <= static_cast<std::size_t>(limits.max_neurons_per_node),
+        true);
+  }
+  EXPECT_GT(changed, 250);
+}
+
+// structural mutation adds and removes nodes and connections over many trials
+TEST(Mutate, ChangesStructure) {
+  GenomeLimits limits;
+  bool grew = false, shrank = false, rewired = false;
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    Genome parent = randomGenome(limits, 75, 0, i);
+    Rng rng(8, RngPurpose::variation, 0, i);
+    Genome child = mutate(parent, limits, aggressive(true), rng);
+    grew |= child.nodes.size() > parent.nodes.size();
+    shrank |= child.nodes.size() < parent.nodes.size();
+    rewired |= child.connections.size() != parent.connections.size();
+  }
+  EXPECT_TRUE(grew);
+  EXPECT_TRUE(shrank);
+  EXPECT_TRUE(rewired);
+}
+
+// crossover: valid, deterministic, root from a, nodes from both parents
+TEST(Crossover, ValidDeterministicAndMixed) {
+  GenomeLimits limits;
+  int mixed = 0;
+  for (std::uint64_t i = 0; i < 2000; ++i) {
+    Genome a = randomGenome(limits, 76, 0, i), b = randomGenome(limits, 76, 1, i);
+    Rng r1(9, RngPurpose::variation, 0, i), r2(9, RngPurpose::variation, 0, i);
+    Genome child = crossover(a, b, limits, r1);
+    ASSERT_NO_THROW(validateGenome(child, limits)) << "pair " << i;
+    EXPECT_EQ(child, crossover(a, b, limits, r2));
+    EXPECT_EQ(child.nodes[0], a.nodes[0]);
+    bool from_b = false;
+    for (std::size_t n = 1; n < child.nodes.size(); ++n) {
+      from_b |= n < b.nodes.size() && child.nodes[n] == b.nodes[n] &&
+                !(n < a.nodes.size() && a.nodes[n] == b.nodes[n]);
+    }
+    if (from_b)
+      ++mixed;
+  }
+  EXPECT_GT(mixed, 300);
+}
+
+// connections travel with their `from` node
+TEST(Crossover, ConnectionsTravelWithFromNode) {
+  Genome a, b;
+  a.nodes.resize(3);
+  b.nodes.resize(3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    a.nodes[i].density = 1000 + static_cast<double>(i);
+    b.nodes[i].density = 2000 + static_cast<double>(i);
+  }
+  auto edge = [](int from, int to, double scale) {
+    ConnectionGene c;
+    c.from = static_cast<std::uint16_t>(from);
+    c.to = static_cast<std::uint16_t>(to);
+    c.scale = scale;
+    return c;
+  };
+  a.connections = {edge(0, 1, 0.6), edge(1, 2, 0.7), edge(2, 2, 0.8)};
+  b.connections = {edge(0, 2, 1.6), edge(1, 2, 1.7), edge(2, 0, 1.8)};
+  GenomeLimits limits;
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    Rng rng(10, RngPurpose::variation, 0, i);
+    Genome child = crossover(a, b, limits, rng);
+    for (const ConnectionGene& c : child.connections) {
+      const Genome& origin = child.nodes[c.from].density < 2000 ? a : b;
+      bool found = std::any_of(
+          origin.connections.begin(), origin.connections.end(),
+          [&](const ConnectionGene& o) { return o.from == c.from && o.scale == c.scale; });
+      EXPECT_TRUE(found);
+    }
+  }
+}
+
+// grafting: valid, deterministic, keeps a's root and reaches b's root
+TEST(Graft, ValidDeterministicAndJoined) {
+  GenomeLimits limits;
+  int joined = 0;
+  for (std::uint64_t i = 0; i < 2000; ++i) {
+    Genome a = randomGenome(limits, 77, 0, i), b = randomGenome(limits, 77, 1, i);
+    Rng r1(11, RngPurpose::variation, 0, i), r2(11, RngPurpose::variation, 0, i);
+    Genome child = graft(a, b, limits, r1);
+    ASSERT_NO_THROW(validateGenome(child, limits)) << "pair " << i;
+    EXPECT_EQ(child, graft(a, b, limits, r2));
+    EXPECT_EQ(child.nodes[0], a.nodes[0]);
+    // b's root follows a's nodes when it fits
+    if (a.nodes.size() + 1 <= static_cast<std::size_t>(limits.max_nodes)) {
+      ASSERT_GT(child.nodes.size(), a.nodes.size());
+      EXPECT_EQ(child.nodes[a.nodes.size()], b.nodes[0]);
+      bool into_b = std::any_of(child.connections.begin(), child.connections.end(),
+                                [&](const ConnectionGene& c) {
+                                  return c.to == a.nodes.size() && c.from < a.nodes.size();
+                                });
+      EXPECT_TRUE(into_b);
+      ++joined;
+    }
+  }
+  EXPECT_GT(joined, 1900);
+}
+
+// grafting onto a genome without connections adds one to b's root
+TEST(Graft, AddsConnectionWhenNone) {
+  Genome a, b;
+  a.nodes.resize(1);
+  b.nodes.resize(2);
+  ConnectionGene c;
+  c.from = 0;
+  c.to = 1;
+  b.connections.push_back(c);
+  GenomeLimits limits;
+  Rng rng(12, RngPurpose::variation);
+  Genome child = graft(a, b, limits, rng);
+  EXPECT_EQ(child.nodes.size(), 3u);
+  ASSERT_EQ(child.connections.size(), 2u);
+  EXPECT_EQ(child.connections[0].from, 0);
+  EXPECT_EQ(child.connections[0].to, 1);
+  EXPECT_EQ(child.connections[1].from, 1);
+  EXPECT_EQ(child.connections[1].to, 2);
+}
+
+// operators truncate to tight limits
+TEST(Operators, RespectTightLimits) {
+  GenomeLimits wide, tight;
+  tight.max_nodes = 3;
+  tight.max_connections = 3;
+  tight.max_neurons_per_node = 1;
+  tight.max_brain_neurons = 1;
+  tight.max_inputs = 1;
+  for (std::uint64_t i = 0; i < 500; ++i) {
+    Genome a = randomGenome(wide, 78, 0, i), b = randomGenome(wide, 78, 1, i);
+    Rng rng(13, RngPurpose::variation, 0, i);
+    ASSERT_NO_THROW(validateGenome(mutate(a, tight, aggressive(true), rng), tight));
+    ASSERT_NO_THROW(validateGenome(crossover(a, b, tight, rng), tight));
+    ASSERT_NO_THROW(validateGenome(graft(a, b, tight, rng), tight));
+  }
+}
+
+}  // namespace
+}  // namespace cambrian::graph

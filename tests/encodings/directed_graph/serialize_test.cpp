@@ -1,0 +1,197 @@
+#include "cambrian/encodings.hpp"
+#include "cambrian/error.hpp"
+#include "cambrian/rng.hpp"
+
+#include "encodings/directed_graph/encoding.hpp"
+#include "encodings/directed_graph/genome.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace cambrian::graph {
+namespace {
+
+// the message of the InputError that deserializing `bytes` throws, or "" if it succeeds
+std::string failure(const std::vector<std::uint8_t>& bytes) {
+  try {
+    deserializeGenome(bytes.data(), bytes.size());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// bit-exact round trip on thousands of random genomes
+TEST(SerializeGenome, RoundTripRandomGenomes) {
+  GenomeLimits limits;
+  for (std::uint64_t i = 0; i < 3000; ++i) {
+    Genome genome = randomGenome(limits, 31, 0, i);
+    std::vector<std::uint8_t> bytes = serializeGenome(genome);
+    Genome back = deserializeGenome(bytes.data(), bytes.size());
+    ASSERT_EQ(back, genome) << "individual " << i;
+    EXPECT_EQ(serializeGenome(back), bytes);
+  }
+}
+
+// doubles travel as their IEEE-754 bits, including the awkward ones
+TEST(SerializeGenome, DoublesAreBitExact) {
+  Genome g;
+  g.nodes.resize(1);
+  g.nodes[0].dimensions = {0.1, 1.0 / 3.0, -0.0};
+  g.nodes[0].density = 5e-324;
+  g.nodes[0].joint_limit = {std::numeric_limits<double>::infinity(), 1e308, -2.5};
+  std::vector<std::uint8_t> bytes = serializeGenome(g);
+  Genome back = deserializeGenome(bytes.data(), bytes.size());
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(back.nodes[0].dimensions[k]),
+              std::bit_cast<std::uint64_t>(g.nodes[0].dimensions[k]));
+  }
+  EXPECT_EQ(back, g);
+}
+
+// the layout starts with the magic and the version, little-endian
+TEST(SerializeGenome, HeaderLayout) {
+  std::vector<std::uint8_t> bytes = serializeGenome(Genome{});
+  ASSERT_GE(bytes.size(), 8u);
+  EXPECT_EQ(std::memcmp(bytes.data(), "CMBG", 4), 0);
+  EXPECT_EQ(bytes[4], kGenomeFormatVersion & 0xff);
+  EXPECT_EQ(bytes[5], 0);
+  EXPECT_EQ(bytes[6], 0);
+  EXPECT_EQ(bytes[7], 0);
+  // an empty genome: header and three zero counts
+  EXPECT_EQ(bytes.size(), 8u + 4 + 4 + 4);
+}
+
+// every truncation of a serialized genome throws InputError naming where it stopped
+TEST(SerializeGenome, EveryPrefixThrows) {
+  GenomeLimits limits;
+  for (std::uint64_t i = 0; i < 20; ++i) {
+    std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(limits, 41, 0, i));
+    for (std::size_t size = 0; size < bytes.size(); ++size) {
+      std::vector<std::uint8_t> prefix(bytes.begin(), bytes.begin() + static_cast<long>(size));
+      std::string message = failure(prefix);
+      ASSERT_NE(message, "") << "prefix " << size << " of " << bytes.size();
+      EXPECT_NE(message.find("genome bytes"), std::string::npos) << message;
+      if (size >= 8) {
+        EXPECT_NE(message.find("truncated in"), std::string::npos) << message;
+        EXPECT_NE(message.find("of " + std::to_string(size)), std::string::npos) << message;
+      }
+    }
+  }
+}
+
+// the exact shape of the truncation messages: inside a field, and a count too large
+TEST(SerializeGenome, TruncationMessageNamesFieldAndOffset) {
+  Genome g;
+  g.nodes.resize(3);
+  for (int n = 0; n < 2; ++n)
+    g.nodes[n].neurons.push_back({NeuronFunction::sum, {{}, {}, {}}, 0});
+  g.nodes[2].neurons.resize(1);
+  std::vector<std::uint8_t> bytes = serializeGenome(g);
+  const std::size_t node_bytes = 1 + 24 + 8 + 1 + 24 + 1 + 4 + 4;
+  const std::size_t neuron_bytes = 1 + 8 + 4 + 3 * 13;
+
+  // cut inside node 2's density (three of its eight bytes present)
+  std::size_t density = 8 + 4 + 2 * (node_bytes + neuron_bytes) + 1 + 24;
+  std::vector<std::uint8_t> cut(bytes.begin(), bytes.begin() + static_cast<long>(density + 3));
+  EXPECT_EQ(failure(cut), "genome bytes: truncated in node 2 (offset " + std::to_string(density) +
+                              " of " + std::to_string(density + 3) + ")");
+
+  // cut inside node 2's only neuron: its count no longer fits
+  std::size_t count = density + 8 + 1 + 24 + 1;
+  cut.assign(bytes.begin(), bytes.begin() + static_cast<long>(count + 4 + 4));
+  EXPECT_EQ(failure(cut), "genome bytes: truncated in node 2 neurons (offset " +
+                              std::to_string(count) + " of " + std::to_string(count + 8) +
+                              ": count 1 needs at least 13 more bytes, 4 left)");
+}
+
+// random byte flips never crash: the result is a genome or an InputError
+TEST(SerializeGenome, RandomByteFlipsNeverCrash) {
+  GenomeLimits limits;
+  Rng rng(3, RngPurpose::test);
+  int failures = 0, successes = 0;
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(limits, 43, 0, i));
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<std::uint8_t> damaged = bytes;
+      int flips = 1 + static_cast<int>(rng.below(4));
+      for (int f = 0; f < flips; ++f) {
+        damaged[rng.below(damaged.size())] ^= static_cast<std::uint8_t>(1 + rng.below(255));
+      }
+      (failure(damaged).empty() ? successes : failures)++;
+    }
+  }
+  // both outcomes happen (doubles absorb most flips, counts and flags reject many)
+  EXPECT_GT(failures, 0);
+  EXPECT_GT(successes, 0);
+}
+
+// random garbage of any length is rejected, never read out of bounds
+TEST(SerializeGenome, GarbageThrows) {
+  Rng rng(4, RngPurpose::test);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<std::uint8_t> bytes(rng.below(200));
+    for (std::uint8_t& b : bytes)
+      b = static_cast<std::uint8_t>(rng.below(256));
+    // half of them get a valid header so the body is exercised
+    if (trial % 2 == 0 && bytes.size() >= 8) {
+      std::memcpy(bytes.data(), "CMBG\x01\x00\x00\x00", 8);
+    }
+    std::string message = failure(bytes);
+    if (!message.empty()) {
+      EXPECT_NE(message.find("genome bytes"), std::string::npos);
+    }
+  }
+}
+
+TEST(SerializeGenome, BadMagic) {
+  std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(GenomeLimits{}, 1));
+  bytes[0] = 'X';
+  EXPECT_EQ(failure(bytes), "genome bytes: not a cambrian genome (bad magic)");
+  EXPECT_EQ(failure({}), "genome bytes: not a cambrian genome (bad magic)");
+  EXPECT_THROW(deserializeGenome(nullptr, 0), InputError);
+}
+
+TEST(SerializeGenome, NewerVersion) {
+  std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(GenomeLimits{}, 1));
+  bytes[4] = 9;
+  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (1)");
+  bytes[4] = 0;
+  EXPECT_NE(failure(bytes).find("version 0"), std::string::npos);
+}
+
+// absurd counts are rejected before anything is allocated
+TEST(SerializeGenome, HugeCountsRejected) {
+  std::vector<std::uint8_t> bytes = serializeGenome(Genome{});
+  bytes[8] = bytes[9] = bytes[10] = bytes[11] = 0xff;
+  std::string message = failure(bytes);
+  EXPECT_NE(message.find("truncated in node count (offset 8 of 20: count 4294967295 needs"),
+            std::string::npos)
+      << message;
+}
+
+TEST(SerializeGenome, TrailingBytesRejected) {
+  std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(GenomeLimits{}, 2));
+  bytes.push_back(0);
+  EXPECT_NE(failure(bytes).find("1 unexpected bytes after the end"), std::string::npos);
+}
+
+// booleans are 0 or 1 on the wire
+TEST(SerializeGenome, BadFlagRejected) {
+  Genome g;
+  g.nodes.resize(1);
+  g.connections.resize(1);
+  std::vector<std::uint8_t> bytes = serializeGenome(g);
+  std::size_t node_bytes = 1 + 24 + 8 + 1 + 24 + 1 + 4 + 4;
+  std::size_t terminal = 8 + 4 + node_bytes + 4 + 2 + 2 + 24 + 24 + 8 + 1;
+  bytes[terminal] = 2;
+  EXPECT_NE(failure(bytes).find("connection 0 terminal_only is 2"), std::string::npos)
+      << failure(bytes);
+}
+
+}  // namespace
+}  // namespace cambrian::graph

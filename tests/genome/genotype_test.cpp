@@ -1,0 +1,43 @@
+// Tests of genotypes: empty ones, shared data and bytes, equality by byte form, checked casts.
+#include "cambrian/encoding.hpp"
+#include "cambrian/error.hpp"
+
+#include "encodings/directed_graph/encoding.hpp"
+
+#include <gtest/gtest.h>
+
+namespace cambrian {
+namespace {
+
+TEST(Genotype, EmptyHoldsNothing) {
+  Genotype empty;
+  EXPECT_FALSE(empty);
+  EXPECT_THROW(empty.encoding(), Error);
+  EXPECT_THROW(empty.data(), Error);
+  EXPECT_TRUE(empty == Genotype());
+}
+
+TEST(Genotype, CopiesShareTheGenomeAndItsBytes) {
+  Genotype a = graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 2, 0, 1));
+  const std::vector<std::uint8_t>& bytes = a.bytes();
+  Genotype b = a;
+  EXPECT_EQ(&b.bytes(), &bytes);  // made once, kept
+  EXPECT_EQ(&b.data(), &a.data());
+  EXPECT_TRUE(a == b);
+  // an equal genome made separately compares equal by its bytes
+  Genotype c = graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 2, 0, 1));
+  EXPECT_TRUE(a == c);
+  Genotype d = graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 2, 0, 2));
+  EXPECT_FALSE(a == d);
+  EXPECT_FALSE(a == Genotype());
+}
+
+TEST(Genotype, CastsAreChecked) {
+  struct Other : GenomeData {};
+  Genotype a = graph::makeGenotype(graph::Genome{});
+  EXPECT_NO_THROW(a.as<graph::GraphGenomeData>());
+  EXPECT_THROW(a.as<Other>(), GenomeError);
+}
+
+}  // namespace
+}  // namespace cambrian

@@ -1,0 +1,175 @@
+// Tests of the Featherstone world behind the World interface: every part shape rests where its
+// geometry says, prismatic joints slide, closed loops are refused with a clear status, free
+// objects of the environment fall and can be read back, materials bounce, the registry.
+#include "physics/featherstone_world.hpp"
+
+#include "cambrian/error.hpp"
+
+#include "physics/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace cambrian {
+namespace {
+
+// a part of `shape` and `size` at `position`
+PartPlan partOf(PartShape shape, Vec3 size, Vec3 position = {}, int parent = -1) {
+  PartPlan part;
+  part.shape = shape;
+  part.size = size;
+  part.mass = 1000 * shapeVolume(shape, size);
+  part.pose.position = position;
+  part.parent = parent;
+  return part;
+}
+
+// steps a world `steps` times with no commands
+void settle(World& world, int steps) {
+  for (int s = 0; s < steps; ++s)
+    world.step({});
+}
+
+// each shape, dropped from 0.3 m, comes to rest with its lowest point on the ground
+TEST(FeatherstoneWorld, EveryShapeRestsOnTheGround) {
+  struct Case {
+    PartShape shape;
+    Vec3 size;
+    double centre;  // height of the centre at rest
+  };
+  const Case cases[] = {{PartShape::box, {0.4, 0.3, 0.2}, 0.1},
+                        {PartShape::sphere, {0.2, 0.2, 0.2}, 0.1},
+                        {PartShape::capsule, {0.5, 0.16, 0.16}, 0.08},
+                        {PartShape::cylinder, {0.5, 0.2, 0.2}, 0.1}};
+  for (const Case& c : cases) {
+    BodyPlan plan;
+    plan.parts.push_back(partOf(c.shape, c.size));
+    Environment environment;
+    PhysicsSettings physics;
+    FeatherstoneWorld world(plan, environment, physics, 0.3);
+    ASSERT_EQ(world.birthStatus(), EvalStatus::ok) << shapeName(c.shape);
+    EXPECT_NEAR(world.lowestPoint(), 0.3, 1e-9) << shapeName(c.shape);
+    settle(world, 720);
+    EXPECT_NEAR(world.partPosition(0).z, c.centre, 3e-3) << shapeName(c.shape);
+    EXPECT_NEAR(world.lowestPoint(), 0.0, 3e-3) << shapeName(c.shape);
+    EXPECT_EQ(world.contacts()[0], 1) << shapeName(c.shape);
+  }
+}
+
+// a prismatic joint slides its part along its axis, within its limit
+TEST(FeatherstoneWorld, PrismaticJointSlides) {
+  BodyPlan plan;
+  plan.parts.push_back(partOf(PartShape::box, {0.6, 0.3, 0.1}));
+  PartPlan slider = partOf(PartShape::box, {0.2, 0.1, 0.1}, {0.4, 0, 0}, 0);
+  slider.joint = JointType::prismatic;
+  slider.pivot_in_parent = {0.3, 0, 0};
+  slider.pivot_in_child = {-0.1, 0, 0};
+  slider.axes[0] = {1, 0, 0};
+  slider.joint_limit = {0.05, 0, 0};
+  slider.cross_section = 0.01;
+  plan.parts.push_back(slider);
+  plan.effectors.push_back(EffectorPlan{1, 0});
+  Environment environment;
+  PhysicsSettings physics;
+  physics.gravity = 0;
+  physics.motor_speed = 0.5;
+  FeatherstoneWorld world(plan, environment, physics, 0.1);
+  ASSERT_EQ(world.birthStatus(), EvalStatus::ok) << world.birthMessage();
+  const double command[] = {1.0};
+  for (int s = 0; s < 240; ++s)
+    world.step(command);
+  EXPECT_GT(world.jointPosition(1, 0), 0.03);
+  EXPECT_LT(world.jointPosition(1, 0), 0.06);
+  // the part moved away from the root along x
+  EXPECT_GT(world.partPosition(1).x - world.partPosition(0).x, 0.43);
+}
+
+// a plan with a closed loop is refused, saying why and what would build it
+TEST(FeatherstoneWorld, ClosedLoopsAreRefusedClearly) {
+  BodyPlan plan;
+  plan.parts.push_back(partOf(PartShape::box, {0.4, 0.4, 0.1}));
+  plan.parts.push_back(partOf(PartShape::box, {0.1, 0.1, 0.1}, {0.25, 0, 0}, 0));
+  plan.parts[1].joint = JointType::revolute;
+  plan.parts[1].pivot_in_parent = {0.2, 0, 0};
+  plan.parts[1].pivot_in_child = {-0.05, 0, 0};
+  LoopJoint loop;
+  loop.part_a = 0;
+  loop.part_b = 1;
+  plan.loops.push_back(loop);
+  Environment environment;
+  FeatherstoneWorld world(plan, environment, PhysicsSettings{}, 0);
+  EXPECT_EQ(world.birthStatus(), EvalStatus::invalid_body);
+  EXPECT_NE(world.birthMessage().find("closed-loop"), std::string::npos) << world.birthMessage();
+  EXPECT_NE(world.birthMessage().find("featherstone"), std::string::npos);
+  // the simulation reports it as the creature's status and never steps
+  Simulation simulation(plan, nullptr, environment, PhysicsSettings{});
+  EXPECT_EQ(simulation.status(), EvalStatus::invalid_body);
+  simulation.step(true);
+  EXPECT_EQ(simulation.steps(), 0u);
+}
+
+// a free object of the environment falls beside the creature and can be read back; a fixed
+// one (mass 0) stays put
+TEST(FeatherstoneWorld, FreeObjectsFallAndAreReadBack) {
+  BodyPlan plan;
+  plan.parts.push_back(partOf(PartShape::box, {0.2, 0.2, 0.2}));
+  Environment environment;
+  FreeObject cube;
+  cube.name = "cube";
+  cube.size = {0.1, 0.1, 0.1};
+  cube.mass = 0.5;
+  cube.pose.position = {1, 0, 0.5};
+  environment.objects.push_back(cube);
+  FreeObject post = cube;
+  post.name = "post";
+  post.mass = 0;
+  post.pose.position = {-1, 0, 0.5};
+  environment.objects.push_back(post);
+  FeatherstoneWorld world(plan, environment, PhysicsSettings{}, 0);
+  ASSERT_EQ(world.birthStatus(), EvalStatus::ok);
+  settle(world, 480);
+  EXPECT_NEAR(world.objectPose(0).position.z, 0.05, 3e-3);
+  EXPECT_NEAR(world.objectPose(0).position.x, 1.0, 1e-3);
+  EXPECT_EQ(world.objectPose(1).position, (Vec3{-1, 0, 0.5}));
+  // the creature is not touched by either
+  EXPECT_NEAR(world.partPosition(0).x, 0.0, 1e-3);
+}
+
+// a part's material sets its bounce: restitution 1 on a restitution-1 ground bounces back up
+TEST(FeatherstoneWorld, MaterialsSetTheBounce) {
+  double peaks[2] = {0, 0};
+  for (int bouncy = 0; bouncy < 2; ++bouncy) {
+    BodyPlan plan;
+    plan.parts.push_back(partOf(PartShape::sphere, {0.2, 0.2, 0.2}));
+    plan.parts[0].material.restitution = bouncy ? 0.9 : 0.0;
+    Environment environment;
+    environment.ground.restitution = 1.0;
+    FeatherstoneWorld world(plan, environment, PhysicsSettings{}, 0.5);
+    bool landed = false;
+    for (int s = 0; s < 480; ++s) {
+      world.step({});
+      double z = world.lowestPoint();
+      landed = landed || z < 0.01;
+      if (landed)
+        peaks[bouncy] = std::max(peaks[bouncy], z);
+    }
+  }
+  EXPECT_LT(peaks[0], 0.02);
+  EXPECT_GT(peaks[1], 0.15);
+}
+
+TEST(World, RegistryAndUnknownNames) {
+  EXPECT_EQ(worldNames().front(), "featherstone");
+  BodyPlan plan;
+  plan.parts.push_back(partOf(PartShape::box, {0.2, 0.2, 0.2}));
+  Environment environment;
+  PhysicsSettings physics;
+  EXPECT_EQ(makeWorld(plan, environment, physics)->birthStatus(), EvalStatus::ok);
+  physics.world = "mujoco";
+  EXPECT_THROW(makeWorld(plan, environment, physics), ConfigError);
+}
+
+}  // namespace
+}  // namespace cambrian
