@@ -270,34 +270,26 @@ void SettingsSchema::reset() {
 }
 
 std::string SettingsSchema::iniText() const {
+  return ini([](const Setting& setting) { return setting.text(); });
+}
+
+std::string SettingsSchema::defaultIniText() const {
+  return ini([](const Setting& setting) { return setting.defaultText(); });
+}
+
+std::string SettingsSchema::ini(const std::function<std::string(const Setting&)>& value) const {
   // sections and keys sorted, so equal settings give equal text
   std::map<std::string, std::map<std::string, std::string>> sections;
   for (const auto& setting : settings_) {
     const std::string& key = setting->key();
     std::size_t dot = key.find('.');
-    sections[key.substr(0, dot)][key.substr(dot + 1)] = setting->text();
+    sections[key.substr(0, dot)][key.substr(dot + 1)] = value(*setting);
   }
   std::string text;
   for (const auto& [section, keys] : sections) {
     text += (text.empty() ? "[" : "\n[") + section + "]\n";
-    for (const auto& [key, value] : keys)
-      text += key + " = " + value + "\n";
-  }
-  return text;
-}
-
-std::string SettingsSchema::defaultIniText() const {
-  std::map<std::string, std::map<std::string, std::string>> sections;
-  for (const auto& setting : settings_) {
-    const std::string& key = setting->key();
-    std::size_t dot = key.find('.');
-    sections[key.substr(0, dot)][key.substr(dot + 1)] = setting->defaultText();
-  }
-  std::string text;
-  for (const auto& [section, keys] : sections) {
-    text += (text.empty() ? "[" : "\n[") + section + "]\n";
-    for (const auto& [key, value] : keys)
-      text += key + " = " + value + "\n";
+    for (const auto& [key, text_value] : keys)
+      text += key + " = " + text_value + "\n";
   }
   return text;
 }

@@ -147,6 +147,7 @@ class SettingsSchema {
 
  private:
   Setting& insert(std::unique_ptr<Setting> setting);
+  std::string ini(const std::function<std::string(const Setting&)>& value) const;
   std::vector<std::unique_ptr<Setting>> settings_;
   std::map<std::string, Setting*> by_key_;
   std::vector<std::function<void()>> checks_;

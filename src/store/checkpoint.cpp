@@ -186,35 +186,42 @@ bool sameLength(const C& c, std::size_t n, ForEach forEach) {
   return same;
 }
 
-// the population from version-2 columns; throws std::runtime_error describing an inconsistency
-Population fromColumns(const Columns& c, std::uint64_t generation) {
+// the population from the columns of either version: every row's shared fields, then its
+// outcome from `outcomeOf(k)`; throws std::runtime_error describing an inconsistency
+template <class C, class ForEach, class OutcomeOf>
+Population populationFrom(const C& c, std::uint64_t generation, ForEach forEach,
+                          OutcomeOf outcomeOf) {
   Population population;
   population.generation = generation;
   const std::size_t n = c.id.size();
-  if (!sameLength(c, n, [](auto& columns, auto visit) { forEachColumn(columns, visit); }))
+  if (!sameLength(c, n, forEach))
     throw std::runtime_error("/population columns differ in length");
   for (std::size_t k = 0; k < n; ++k) {
     Individual i = individualFrom(c, k);
-    ByteReader reader(slice(c.outcome_bytes, c.outcome_offset[k], c.outcome_size[k], k, "outcome"),
-                      c.outcome_size[k], "/population row " + std::to_string(k) + " outcome");
-    i.outcome = readOutcome(reader);
-    reader.expectEnd();
+    i.outcome = outcomeOf(k);
     population.individuals.push_back(std::move(i));
   }
   return population;
 }
 
-// the population from version-1 columns
+// the population from version-2 columns: each outcome in its byte form
+Population fromColumns(const Columns& c, std::uint64_t generation) {
+  auto forEach = [](auto& columns, auto visit) { forEachColumn(columns, visit); };
+  return populationFrom(c, generation, forEach, [&](std::size_t k) {
+    ByteReader reader(slice(c.outcome_bytes, c.outcome_offset[k], c.outcome_size[k], k, "outcome"),
+                      c.outcome_size[k], "/population row " + std::to_string(k) + " outcome");
+    Outcome outcome = readOutcome(reader);
+    reader.expectEnd();
+    return outcome;
+  });
+}
+
+// the population from version-1 columns: each outcome field a column of its own
 Population fromColumnsV1(const ColumnsV1& c, std::uint64_t generation) {
-  Population population;
-  population.generation = generation;
-  const std::size_t n = c.id.size();
-  if (!sameLength(c, n, [](auto& columns, auto visit) { forEachColumnV1(columns, visit); }))
-    throw std::runtime_error("/population columns differ in length");
+  auto forEach = [](auto& columns, auto visit) { forEachColumnV1(columns, visit); };
   std::size_t next_name = 0, next_value = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    Individual i = individualFrom(c, k);
-    Outcome& o = i.outcome;
+  return populationFrom(c, generation, forEach, [&](std::size_t k) {
+    Outcome o;
     if (c.status[k] > static_cast<std::uint8_t>(EvalStatus::failed))
       throw std::runtime_error("/population row " + std::to_string(k) + ": status out of range");
     o.fitness = c.fitness[k];
@@ -237,9 +244,8 @@ Population fromColumnsV1(const ColumnsV1& c, std::uint64_t generation) {
       measure.value = c.measure_values[next_value++];
       o.measures.push_back(std::move(measure));
     }
-    population.individuals.push_back(std::move(i));
-  }
-  return population;
+    return o;
+  });
 }
 
 // a 1-D dataset holding `values` (fletcher32-checked chunks when not empty); false on failure

@@ -475,8 +475,7 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
       plan.effectors.push_back(EffectorPlan{i, d});
       network->effector_inputs.push_back(wiring.partInput(node.effectors[d].input, i));
       const JointControllerGene& gene = genome.connections[part.connection].controller;
-      oscillators.push_back(
-          SineOscillator{gene.enabled, gene.amplitude, gene.frequency, gene.phase, gene.offset});
+      oscillators.push_back(gene);
       any_oscillator = any_oscillator || gene.enabled;
     }
   }

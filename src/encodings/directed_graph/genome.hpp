@@ -10,6 +10,7 @@
 #include "cambrian/math.hpp"
 
 #include "brain/neural_network.hpp"
+#include "brain/sine_oscillators.hpp"
 
 #include <array>
 #include <cstdint>
@@ -59,15 +60,9 @@ struct EffectorGene {
   friend bool operator==(const EffectorGene&, const EffectorGene&) = default;
 };
 
-/// Minemonics' per-joint controller: a sine added to each effector of the joint it drives.
-struct JointControllerGene {
-  bool enabled = false;
-  double amplitude = 0;  ///< in effector units (-1..1)
-  double frequency = 1;  ///< Hz
-  double phase = 0;      ///< radians
-  double offset = 0;     ///< effector units
-  friend bool operator==(const JointControllerGene&, const JointControllerGene&) = default;
-};
+/// Minemonics' per-joint controller: a sine added to each effector of the joint it drives (the
+/// oscillator the sine controller runs, brain/sine_oscillators.hpp).
+using JointControllerGene = SineOscillator;
 
 /// A class of body parts (a graph node).
 struct PartGene {
