@@ -25,11 +25,14 @@ std::vector<std::string> sectionsOf(const SettingsSchema& schema) {
   return sections;
 }
 
-// every key as a command-line option taking text (lists: repeatable), with its readable
-// default shown when `with_defaults`
-po::options_description schemaOptions(const SettingsSchema& schema, bool with_defaults) {
+// every key (of `only`'s sections, when given) as a command-line option taking text (lists:
+// repeatable), with its readable default shown when `with_defaults`
+po::options_description schemaOptions(const SettingsSchema& schema, bool with_defaults,
+                                      const std::set<std::string>* only = nullptr) {
   po::options_description all;
   for (const std::string& section : sectionsOf(schema)) {
+    if (only && !only->count(section))
+      continue;
     std::string title = schema.sectionTitle(section);
     po::options_description group(title.empty() ? "[" + section + "]" : title);
     for (const auto& setting : schema.settings()) {
@@ -184,6 +187,12 @@ std::string readableDefault(const Setting& setting) {
 std::string optionsHelp(const po::options_description& cli_only, const SettingsSchema& schema) {
   std::ostringstream text;
   text << cli_only << "\n" << schemaOptions(schema, true);
+  return text.str();
+}
+
+std::string sectionsHelp(const SettingsSchema& schema, const std::set<std::string>& sections) {
+  std::ostringstream text;
+  text << schemaOptions(schema, false, &sections);
   return text.str();
 }
 

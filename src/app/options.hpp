@@ -57,6 +57,10 @@ std::string readableDefault(const Setting& setting);
 /// them, with readable defaults.
 std::string optionsHelp(const po::options_description& cli_only, const SettingsSchema& schema);
 
+/// The keys of `schema` in `sections` ("physics"), one group per section, as --help prints them
+/// but without defaults (for a command whose settings start from stored values: replay).
+std::string sectionsHelp(const SettingsSchema& schema, const std::set<std::string>& sections);
+
 /// The keys of `schema` as Markdown: one "### [section]" heading and table (key, default,
 /// meaning) per section, in declaration order (docs/user-guide.md is generated so).
 std::string optionsMarkdown(const SettingsSchema& schema);

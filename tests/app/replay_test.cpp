@@ -3,6 +3,7 @@
 #include "cambrian/error.hpp"
 
 #include "app/cli.hpp"
+#include "core/settings.hpp"
 #include "store/history.hpp"
 #include "store/trajectory.hpp"
 
@@ -195,12 +196,205 @@ TEST_F(ReplayCommand, BadInput) {
          ExitCode::output_file, dir_ + "/no/such/dir/x.h5");
 }
 
+// the text of a file
+std::string fileText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// the stored text form of individual `id`'s genome
+std::string storedGenomeText(const std::vector<Individual>& all, std::uint64_t id) {
+  for (const Individual& row : all) {
+    if (row.id == id)
+      return row.genome.encoding().toText(row.genome);
+  }
+  return "";
+}
+
+// the id replay printed on its creature line ("creature       id 7, generation ...")
+std::uint64_t replayedId(const std::string& output) {
+  auto items = words(lineStartingWith(output, "creature"));
+  return items.size() >= 3 ? std::stoull(items[2]) : kNoId;
+}
+
+// a changed evaluation time (command line) and time step (config file) are listed with stored
+// and new values before the table; both outcomes are shown, nothing is compared, exit 0
+TEST_F(ReplayCommand, ChangedSettingsAreShownNotCompared) {
+  std::string stored_step =
+      iniValues(HistoryReader(history_).attributes().config_text)["physics.time_step"];
+  ASSERT_FALSE(stored_step.empty());
+  ASSERT_NE(stored_step, "0.0035");
+  std::string config = dir_ + "/changed.ini";
+  std::ofstream(config) << "[physics]\ntime_step = 0.0035\n";
+  auto result = runCambrian("replay --history " + history_ +
+                            " --best --task.evaluation_time 2 --config " + config);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("changed        physics.time_step: stored " + stored_step +
+                               ", replayed with 0.0035\n"),
+            std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("changed        task.evaluation_time: stored 1, replayed with 2\n"),
+            std::string::npos)
+      << result.output;
+  std::size_t note = result.output.find("made under other settings");
+  ASSERT_NE(note, std::string::npos) << result.output;
+  EXPECT_LT(note, result.output.find("\nstatus")) << result.output;
+  EXPECT_NE(lineStartingWith(result.output, "task").find("2 s measured, step 0.0035 s"),
+            std::string::npos)
+      << result.output;
+  auto steps = words(lineStartingWith(result.output, "steps"));
+  ASSERT_EQ(steps.size(), 3u) << result.output;
+  EXPECT_NE(steps[1], steps[2]);
+  EXPECT_EQ(result.output.find("DIFFERENT"), std::string::npos) << result.output;
+  EXPECT_EQ(lineStartingWith(result.output, "replay"),
+            "replay         under changed settings (not compared)");
+}
+
+// a setting given equal to the stored value changes nothing: the replay is still compared bit
+// for bit (command line and config file)
+TEST_F(ReplayCommand, SettingEqualToStoredIsStillCompared) {
+  std::string config = dir_ + "/same.ini";
+  std::ofstream(config) << "[task]\nname = walk\n";
+  auto result = runCambrian("replay --history " + history_ +
+                            " --best --task.evaluation_time 1.0 --config " + config);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(lineStartingWith(result.output, "replay"), "replay         bit-identical")
+      << result.output;
+  EXPECT_NE(result.output.find("setting        task.evaluation_time = 1 as stored (unchanged)"),
+            std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("setting        task.name = walk as stored (unchanged)"),
+            std::string::npos)
+      << result.output;
+  EXPECT_EQ(result.output.find("changed "), std::string::npos) << result.output;
+}
+
+// an export under changed settings records them in the trajectory's source
+TEST_F(ReplayCommand, ExportUnderChangedSettingsSaysSo) {
+  std::string traj = dir_ + "/changed_traj.h5";
+  auto result = runCambrian("replay --history " + history_ +
+                            " --best --task.evaluation_time 2 --export " + traj);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  Trajectory t = readTrajectory(traj);
+  EXPECT_EQ(t.source,
+            history_ + " (replayed under changed settings: task.evaluation_time = 2 (stored 1))");
+  EXPECT_EQ(printed(t.fitness), words(lineStartingWith(result.output, "fitness"))[2]);
+  EXPECT_EQ(t.creature_id, replayedId(result.output));
+  EXPECT_GT(t.time.back(), 2.0);  // the longer evaluation was recorded
+}
+
+// settings that are bad, unknown or that replay cannot change: the documented exit codes,
+// naming the key (and the file)
+TEST_F(ReplayCommand, BadSettings) {
+  auto expect = [](const std::string& arguments, ExitCode wanted,
+                   const std::vector<std::string>& phrases) {
+    auto result = runCambrian("replay --history " + history_ + " --best " + arguments);
+    EXPECT_EQ(result.exit_code, code(wanted)) << arguments << "\n" << result.output;
+    for (const std::string& phrase : phrases)
+      EXPECT_NE(result.output.find(phrase), std::string::npos) << arguments << "\n"
+                                                               << result.output;
+  };
+  expect("--task.evaluation_time -1", ExitCode::config,
+         {"command line: --task.evaluation_time = -1"});
+  expect("--physics.world nosuch", ExitCode::config, {"physics.world = nosuch"});
+  expect("--task.evaluation_time many", ExitCode::usage, {"task.evaluation_time", "many"});
+  expect("--task.no_such_key 1", ExitCode::usage, {"task.no_such_key"});
+  expect("--genome.max_parts 5", ExitCode::usage,
+         {"--genome.max_parts", "cannot change [genome] settings", "--save-genome"});
+  expect("--evolution.add_node_rate 0.5", ExitCode::usage,
+         {"--evolution.add_node_rate", "only [environment], [physics] and [task]"});
+  std::string genome_ini = dir_ + "/genome.ini";
+  std::ofstream(genome_ini) << "[genome]\nmax_parts = 5\n";
+  expect("--config " + genome_ini, ExitCode::config,
+         {genome_ini, "genome.max_parts", "cannot change [genome] settings"});
+  std::string unknown_ini = dir_ + "/unknown.ini";
+  std::ofstream(unknown_ini) << "[physics]\nno_such_key = 1\n";
+  expect("--config " + unknown_ini, ExitCode::config, {unknown_ini, "no_such_key"});
+  std::string bad_ini = dir_ + "/bad.ini";
+  std::ofstream(bad_ini) << "[physics]\ntime_step = 0\n";
+  expect("--config " + bad_ini, ExitCode::config, {bad_ini, "physics.time_step = 0"});
+  expect("--config " + dir_ + "/missing.ini", ExitCode::config, {dir_ + "/missing.ini"});
+}
+
+// --save-genome writes the stored genome's text form; simulate evaluates that file with the
+// replay's evaluation seed and the run's settings to the replayed fitness, bit for bit
+TEST_F(ReplayCommand, SavedGenomeIsTheStoredOne) {
+  std::string path = dir_ + "/best.genome";
+  auto result = runCambrian("replay --history " + history_ + " --best --save-genome " + path);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(lineStartingWith(result.output, "replay"), "replay         bit-identical");
+  EXPECT_EQ(lineStartingWith(result.output, "genome"),
+            "genome         saved to " + path + " (text form)");
+  std::string text = fileText(path);
+  EXPECT_EQ(text, storedGenomeText(rows(), replayedId(result.output)));
+  EXPECT_EQ(text.rfind("cambrian-genome", 0), 0u) << text;
+  auto seed = words(lineStartingWith(result.output, "eval seed"));
+  ASSERT_EQ(seed.size(), 3u) << result.output;
+  auto simulated =
+      runCambrian("simulate --genome " + path + " --task.evaluation_time 1 --seed " + seed[2]);
+  ASSERT_EQ(simulated.exit_code, 0) << simulated.output;
+  EXPECT_EQ(lineStartingWith(simulated.output, "status"), "status     ok");
+  EXPECT_EQ(words(lineStartingWith(simulated.output, "fitness"))[1],
+            words(lineStartingWith(result.output, "fitness"))[2]);
+}
+
+// --save-genome replaces a file that is there (and says so); a path that cannot be written is
+// exit 5 naming it; the history itself is refused
+TEST_F(ReplayCommand, SaveGenomeOutputs) {
+  std::string path = dir_ + "/replaced.genome";
+  std::ofstream(path) << "old contents\n";
+  auto result = runCambrian("replay --history " + history_ + " --id 1 --save-genome " + path);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(lineStartingWith(result.output, "genome").find("replacing the file that was there"),
+            std::string::npos)
+      << result.output;
+  EXPECT_EQ(fileText(path), storedGenomeText(rows(), 1));
+  std::string unwritable = dir_ + "/no/such/dir/g.genome";
+  result = runCambrian("replay --history " + history_ + " --id 1 --save-genome " + unwritable);
+  EXPECT_EQ(result.exit_code, code(ExitCode::output_file)) << result.output;
+  EXPECT_NE(result.output.find(unwritable), std::string::npos) << result.output;
+  result = runCambrian("replay --history " + history_ + " --id 1 --save-genome " + history_);
+  EXPECT_EQ(result.exit_code, code(ExitCode::usage)) << result.output;
+  EXPECT_NE(result.output.find("the history being replayed"), std::string::npos) << result.output;
+  EXPECT_NO_THROW(HistoryReader{history_});
+}
+
+// a genome saved by replay seeds a tiny evolution: it is generation 0's seed individual,
+// evaluated with status ok
+TEST_F(ReplayCommand, SavedGenomeSeedsAnEvolution) {
+  std::string path = dir_ + "/seed.genome";
+  ASSERT_EQ(runCambrian("replay --history " + history_ + " --best --save-genome " + path).exit_code,
+            0);
+  std::string out = dir_ + "/seeded";
+  auto run = runCambrian(
+      "evolve --evolution.population 4 --evolution.generations 1 --task.evaluation_time 1 "
+      "--evolution.seed_genomes " +
+      path + " --seed 11 --quiet --out " + out);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  int seeds = 0;
+  for (const Individual& row : HistoryReader(out + "/history.h5").individuals()) {
+    if (row.origin != Origin::seed)
+      continue;
+    ++seeds;
+    EXPECT_EQ(row.genome.encoding().toText(row.genome), fileText(path));
+    EXPECT_EQ(row.outcome.status, EvalStatus::ok);
+  }
+  EXPECT_EQ(seeds, 1);
+}
+
 // --help describes the command and exits 0
 TEST(ReplayHelp, Help) {
   auto result = runCambrian("replay --help");
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_NE(result.output.find("--history"), std::string::npos);
   EXPECT_NE(result.output.find("--export"), std::string::npos);
+  EXPECT_NE(result.output.find("--save-genome"), std::string::npos);
+  EXPECT_NE(result.output.find("text form"), std::string::npos);
+  EXPECT_NE(result.output.find("--task.evaluation_time"), std::string::npos);
+  EXPECT_NE(result.output.find("--physics.time_step"), std::string::npos);
+  EXPECT_EQ(result.output.find("--genome.max_parts"), std::string::npos);
   auto usage = runCambrian("--help");
   EXPECT_NE(usage.output.find("replay"), std::string::npos);
 }
