@@ -20,6 +20,8 @@ enum class ExitCode : int {
   interrupted = 9,     ///< stopped by a signal before a clean checkpoint could be written
   /// a replayed creature's outcome differs from the one its history stores (cambrian replay)
   replay_mismatch = 10,
+  /// a body broke a physics check: crept at rest or gained unexplained energy (cambrian audit)
+  audit_failed = 11,
 };
 
 /// Base of all cambrian errors: a message for people and the exit code for the process.

@@ -13,5 +13,8 @@ int runEvolve(int argc, char** argv);
 /// bit-identical to the stored one, ExitCode::replay_mismatch when not. `--export` writes its
 /// trajectory.
 int runReplay(int argc, char** argv);
+/// `cambrian audit`: checks the physics on many bodies; ExitCode::audit_failed when a body
+/// creeps at rest or gains unexplained energy.
+int runAudit(int argc, char** argv);
 
 }  // namespace cambrian

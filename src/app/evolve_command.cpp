@@ -121,8 +121,9 @@ void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
   checkSettings(schema, origins);
   s.run.fresh = fresh;
   s.run.config_text = schema.iniText();
-  // every setting at its default (keys added since a checkpoint was written compare with these)
-  s.run.default_config_text = schema.defaultIniText();
+  // what each setting was before it existed (keys added since a checkpoint was written compare
+  // with these)
+  s.run.earlier_config_text = schema.earlierRunsIniText();
   s.run.run_only = schema.runOnlyKeys();
   s.run.measures = s.worker.creature.task().measures();
 

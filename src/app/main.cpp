@@ -20,6 +20,7 @@ void printUsage(std::ostream& out) {
       << "  simulate   evaluate one creature and print its outcome\n"
       << "  replay     re-simulate a creature of a history.h5 bit for bit; export its trajectory\n"
       << "  inspect    print a genome and its body statistics\n"
+      << "  audit      check the physics on many bodies: rest stays rest, energy is explained\n"
       << "  version    print the version and git hash\n";
 }
 
@@ -43,6 +44,8 @@ int main(int argc, char** argv) {
       return cambrian::runEvolve(argc - 1, argv + 1);
     if (command == "replay")
       return cambrian::runReplay(argc - 1, argv + 1);
+    if (command == "audit")
+      return cambrian::runAudit(argc - 1, argv + 1);
     if (command == "version" || command == "--version") {
       std::cout << "cambrian " << cambrian::kVersion << " (" << cambrian::kGitHash << ")\n";
       return 0;

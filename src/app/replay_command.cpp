@@ -39,8 +39,18 @@ const std::set<std::string> kCreatureSections = {"environment", "genome", "physi
 CreatureSettings creatureSettingsOf(const HistoryReader& history) {
   CreatureSettings settings;
   try {
-    for (const IniEntry& entry :
-         parseIni(history.attributes().config_text, history.path() + ": config_text")) {
+    std::vector<IniEntry> entries =
+        parseIni(history.attributes().config_text, history.path() + ": config_text");
+    // keys newer than the history: what its run used then (friction anchors off, ...)
+    SettingsSchema schema;
+    settings.declareSettings(schema);
+    for (const auto& [key, value] : schema.earlierRunValues()) {
+      bool stored = std::any_of(entries.begin(), entries.end(),
+                                [&key](const IniEntry& entry) { return entry.key == key; });
+      if (!stored)
+        settings.set(key, value);
+    }
+    for (const IniEntry& entry : entries) {
       std::string section = entry.key.substr(0, entry.key.find('.'));
       if (!kCreatureSections.count(section))
         continue;

@@ -96,6 +96,11 @@ Setting& Setting::runOnly() {
   return *this;
 }
 
+Setting& Setting::earlierRunsUsed(std::string value) {
+  earlier_text_ = std::move(value);
+  return *this;
+}
+
 std::string Setting::text() const {
   switch (type_) {
     case Type::real:
@@ -277,6 +282,12 @@ std::string SettingsSchema::defaultIniText() const {
   return ini([](const Setting& setting) { return setting.defaultText(); });
 }
 
+std::string SettingsSchema::earlierRunsIniText() const {
+  return ini([](const Setting& s) {
+    return s.earlierRunsText().empty() ? s.defaultText() : s.earlierRunsText();
+  });
+}
+
 std::string SettingsSchema::ini(const std::function<std::string(const Setting&)>& value) const {
   // sections and keys sorted, so equal settings give equal text
   std::map<std::string, std::map<std::string, std::string>> sections;
@@ -301,6 +312,15 @@ std::set<std::string> SettingsSchema::runOnlyKeys() const {
       keys.insert(setting->key());
   }
   return keys;
+}
+
+std::map<std::string, std::string> SettingsSchema::earlierRunValues() const {
+  std::map<std::string, std::string> values;
+  for (const auto& setting : settings_) {
+    if (!setting->earlierRunsText().empty())
+      values[setting->key()] = setting->earlierRunsText();
+  }
+  return values;
 }
 
 bool parseSeed(const std::string& text, std::uint64_t& value) {

@@ -43,11 +43,16 @@ class Setting {
   Setting& oneOf(std::vector<std::string> words);
   /// The setting changes no result: a resumed run may change it, the settings hash leaves it out.
   Setting& runOnly();
+  /// The key is newer than some stored runs, which behaved as `value`: a stored settings text
+  /// without the key (a history, a checkpoint) means this value, not the default.
+  Setting& earlierRunsUsed(std::string value);
 
   const std::string& key() const { return key_; }
   const std::string& help() const { return help_; }
   Type type() const { return type_; }
   bool isRunOnly() const { return run_only_; }
+  /// What runs stored before the key existed used (empty: the default, as for most keys).
+  const std::string& earlierRunsText() const { return earlier_text_; }
   /// The value at declaration, as INI text.
   const std::string& defaultText() const { return default_text_; }
   /// The current value as INI text (numbers in the shortest form that reads back exactly).
@@ -68,6 +73,7 @@ class Setting {
   void* variable_;
   std::string help_;
   std::string default_text_;
+  std::string earlier_text_;
   bool run_only_ = false;
   std::vector<std::pair<std::function<bool()>, std::string>> rules_;
   std::vector<std::string> choices_;
@@ -140,8 +146,14 @@ class SettingsSchema {
   std::string iniText() const;
   /// The defaults in the same form.
   std::string defaultIniText() const;
+  /// What each setting was in runs stored before it existed, in the same form: its declared
+  /// earlier value (Setting::earlierRunsUsed), else its default.
+  std::string earlierRunsIniText() const;
   /// The keys declared run-only.
   std::set<std::string> runOnlyKeys() const;
+  /// key -> value for the keys whose absence from a stored settings text means something other
+  /// than their default (Setting::earlierRunsUsed).
+  std::map<std::string, std::string> earlierRunValues() const;
   /// The title of `section` ("" when none was given).
   std::string sectionTitle(const std::string& section) const;
 

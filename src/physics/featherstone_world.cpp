@@ -104,6 +104,12 @@ double reachDown(const PartPlan& part, const btMatrix3x3& basis) {
 
 }  // namespace
 
+void FeatherstoneWorld::anchorFriction(btCollisionObject& object) const {
+  if (physics_.friction_anchors)
+    object.setCollisionFlags(object.getCollisionFlags() |
+                             btCollisionObject::CF_HAS_FRICTION_ANCHOR);
+}
+
 // collision memory pools sized for one creature (at most a few dozen parts): Bullet's default
 // pools (4,096 manifolds and algorithms) cost more to set up than a birth check itself; a pool
 // that runs out falls back to the heap, which changes no result
@@ -132,6 +138,7 @@ struct FeatherstoneObjects {
   std::vector<std::unique_ptr<btDefaultMotionState>> object_states;
   std::vector<std::unique_ptr<btRigidBody>> objects;  // Environment::objects order
   bool self_contacts = true;  // parts touch each other (always at the birth check)
+  mutable btAlignedObjectArray<btVector3> omega, velocity;  // mechanicalEnergy's scratch
 
   ~FeatherstoneObjects() {
     for (auto& object : objects)
@@ -206,11 +213,15 @@ void FeatherstoneWorld::build(double birth_height) {
 
   // world: gravity, fixed-step solver settings, ground plane
   b.world.setGravity(btVector3(0, 0, -physics_.gravity));
-  b.world.getSolverInfo().m_numIterations = physics_.solver_iterations;
+  btContactSolverInfo& solver = b.world.getSolverInfo();
+  solver.m_numIterations = physics_.solver_iterations;
+  solver.m_erp2 = physics_.contact_erp;
+  solver.m_linearSlop = physics_.contact_slop;
   b.ground.setCollisionShape(&b.ground_shape);
   b.ground.setFriction(environment_.ground.friction);
   b.ground.setRestitution(environment_.ground.restitution);
   b.ground.setUserIndex(kGroundIndex);
+  anchorFriction(b.ground);
   b.world.addCollisionObject(&b.ground, btBroadphaseProxy::StaticFilter,
                              btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
 
@@ -242,6 +253,7 @@ void FeatherstoneWorld::build(double birth_height) {
 
   // links: walk the parts in plan order (parents first)
   dof_link_.assign(part_count, {-1, -1, -1});
+  virtual_link_part_.assign(link_count, -1);
   max_torque_.assign(part_count, 0);
   std::vector<int> part_link(part_count, -1);  // Bullet link carrying each part's shape
   int next_link = 0;
@@ -285,6 +297,8 @@ void FeatherstoneWorld::build(double birth_height) {
           last ? com_offset : btVector3(0, 0, 0), true);
       dof_link_[i][d] = link;
       damped_links_.push_back(link);
+      if (!last)
+        virtual_link_part_[link] = i;
     }
     part_link[i] = next_link - 1;
   }
@@ -302,6 +316,7 @@ void FeatherstoneWorld::build(double birth_height) {
     collider->setRestitution(part.material.restitution < 0 ? physics_.restitution
                                                            : part.material.restitution);
     collider->setUserIndex(i);
+    anchorFriction(*collider);
     if (i == 0) {
       body.setBaseCollider(collider.get());
     } else {
@@ -366,6 +381,7 @@ void FeatherstoneWorld::addObjects() {
         object.material.restitution < 0 ? physics_.restitution : object.material.restitution;
     b.objects.push_back(std::make_unique<btRigidBody>(info));
     b.objects.back()->setUserIndex(objectIndex(static_cast<int>(k)));
+    anchorFriction(*b.objects.back());
     b.world.addRigidBody(b.objects.back().get());
   }
 }
@@ -470,7 +486,56 @@ void FeatherstoneWorld::step(std::span<const double> commands) {
   for (int k = 0; k < physics_.substeps; ++k) {
     applyTorques(commands, substep);
     bullet_->world.stepSimulation(substep, 0);
+    addEffectorWorkBound(commands, substep);
   }
+}
+
+void FeatherstoneWorld::addEffectorWorkBound(std::span<const double> commands, double substep) {
+  // no effector pushes harder than its limit x |command|, at the speed the step integrated with
+  if (commands.empty())
+    return;
+  const btMultiBody& body = *bullet_->body;
+  for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
+    const EffectorPlan& effector = plan_.effectors[e];
+    int link = dof_link_[effector.part][effector.dof];
+    if (link >= 0) {
+      work_bound_ += std::abs(commands[e]) * max_torque_[effector.part] *
+                     std::abs(body.getJointVel(link)) * substep;
+    }
+  }
+}
+
+double FeatherstoneWorld::mechanicalEnergy() const {
+  // the velocities of every body in its own frame (index 0 the base, k + 1 link k)
+  const FeatherstoneObjects& b = *bullet_;
+  const btMultiBody& body = *b.body;
+  const int links = body.getNumLinks();
+  b.omega.resize(links + 1);
+  b.velocity.resize(links + 1);
+  body.compTreeLinkVelocities(&b.omega[0], &b.velocity[0]);
+  auto kinetic = [&](int k, double mass, const btVector3& inertia) {
+    const btVector3& w = b.omega[k];
+    return 0.5 * (mass * b.velocity[k].length2() + w.x() * w.x() * inertia.x() +
+                  w.y() * w.y() * inertia.y() + w.z() * w.z() * inertia.z());
+  };
+
+  // kinetic, and m g z at each body's centre: a part's own, a virtual link's at its joint pivot
+  const double g = physics_.gravity;
+  double energy = kinetic(0, body.getBaseMass(), body.getBaseInertia()) +
+                  body.getBaseMass() * g * partPosition(0).z;
+  for (int link = 0; link < links; ++link) {
+    const double mass = body.getLinkMass(link);
+    energy += kinetic(link + 1, mass, body.getLinkInertia(link));
+    int pivot_part = virtual_link_part_[link];
+    if (pivot_part < 0) {
+      const btMultiBodyLinkCollider* collider = body.getLink(link).m_collider;
+      energy += mass * g * (collider ? collider->getWorldTransform().getOrigin().z() : 0.0);
+    } else {
+      const btTransform& frame = b.colliders[pivot_part]->getWorldTransform();
+      energy += mass * g * (frame * toBt(plan_.parts[pivot_part].pivot_in_child)).z();
+    }
+  }
+  return energy;
 }
 
 Vec3 FeatherstoneWorld::partPosition(int part) const {

@@ -9,6 +9,8 @@
 #include <array>
 #include <memory>
 
+class btCollisionObject;
+
 namespace cambrian {
 
 struct FeatherstoneObjects;  // the Bullet objects, private to featherstone_world.cpp
@@ -37,6 +39,8 @@ class FeatherstoneWorld : public World {
   Vec3 directionInPart(int part, Vec3 point) const override;
   double lowestPoint() const override;
   Transform objectPose(int object) const override;
+  double mechanicalEnergy() const override;
+  double effectorWorkBound() const override { return work_bound_; }
 
  private:
   void build(double birth_height);
@@ -44,6 +48,8 @@ class FeatherstoneWorld : public World {
   void checkBirthPenetration();
   void stopSelfContacts();
   void applyTorques(std::span<const double> commands, double substep);
+  void addEffectorWorkBound(std::span<const double> commands, double substep);
+  void anchorFriction(btCollisionObject& object) const;
   void refuse(EvalStatus status, std::string message);
 
   const BodyPlan& plan_;
@@ -57,7 +63,10 @@ class FeatherstoneWorld : public World {
   std::vector<std::array<int, 3>> dof_link_;
   std::vector<double> max_torque_;
   std::vector<std::uint8_t> contact_;
-  std::vector<int> damped_links_;  // every revolute or prismatic link, real or virtual
+  std::vector<int> damped_links_;       // every revolute or prismatic link, real or virtual
+  std::vector<int> virtual_link_part_;  // per Bullet link: the part whose pivot holds it (virtual
+                                        // links of multi-DoF joints), or -1 (the part's own link)
+  double work_bound_ = 0;               // effectorWorkBound()
 };
 
 }  // namespace cambrian

@@ -38,8 +38,21 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
   s.add("physics.motor_speed", p.motor_speed, "target speed of a saturated motor, rad/s")
       .require([&p] { return p.motor_speed > 0 && std::isfinite(p.motor_speed); }, "must be > 0");
   s.add("physics.self_collision", p.self_collision,
-        "parts collide with each other while moving (Sims), not only with the ground; overlap at "
-        "birth is rejected either way");
+        "parts collide with each other while moving, joint neighbours excepted (Sims); false: "
+        "only with the ground and objects (Walking with Dinosaurs). Overlap at birth is rejected "
+        "either way");
+  s.add("physics.friction_anchors", p.friction_anchors,
+        "contacts hold their point while inside the friction cone (Bullet friction anchors): a "
+        "body at rest stays at rest; false: Bullet's default, resting contacts creep")
+      .earlierRunsUsed("false");
+  s.add("physics.contact_slop", p.contact_slop,
+        "overlap a contact keeps uncorrected, m (only deeper overlap is pushed apart)")
+      .require([&p] { return p.contact_slop >= 0 && p.contact_slop <= 0.1; },
+               "must be in [0, 0.1] m")
+      .earlierRunsUsed("0");
+  s.add("physics.contact_erp", p.contact_erp,
+        "share of a contact's overlap beyond the slop removed per Bullet step (Bullet's erp2)")
+      .require([&p] { return p.contact_erp >= 0 && p.contact_erp <= 1; }, "must be in [0, 1]");
   s.add("physics.solver_iterations", p.solver_iterations, "constraint solver iterations per step")
       .require([&p] { return p.solver_iterations >= 1 && p.solver_iterations <= 1000; },
                "must be in 1..1000");
@@ -59,6 +72,12 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "wall-clock bound of one evaluation, s (0 = none)")
       .require([&p] { return p.max_wall_seconds >= 0 && std::isfinite(p.max_wall_seconds); },
                "must be >= 0 and finite (0 = no bound)");
+  s.add("physics.max_energy_gain", p.max_energy_gain,
+        "largest rise of the body's mechanical energy not explained by gravity and the "
+        "effectors, in units of its weight times its length; more: exploded (0 = not watched)")
+      .require([&p] { return p.max_energy_gain >= 0 && std::isfinite(p.max_energy_gain); },
+               "must be >= 0 and finite (0 = not watched)")
+      .earlierRunsUsed("0");
 }
 
 }  // namespace cambrian

@@ -31,17 +31,32 @@ struct PhysicsSettings {
   double strength_per_area = 2000;  ///< N m of torque per m^2 of the smaller cross-section
   Actuation actuation = Actuation::saturated_motor;  ///< how commands move the joints
   double motor_speed = 10;                           ///< rad / s, target speed of a saturated motor
-  /// Whether a creature's parts collide with each other while it moves (Sims) or only with the
-  /// ground (Walking with Dinosaurs; Chaumont et al. test self-overlap at birth only). Overlap at
-  /// birth is rejected either way. Off by default: a motor pressing one part into another lets
-  /// Bullet's contact correction pump energy into the body.
-  bool self_collision = false;
+  /// Whether a creature's parts collide with each other while it moves, joint neighbours excepted
+  /// (Sims), or only with the ground and objects (Walking with Dinosaurs; Chaumont et al. test
+  /// self-overlap at birth only). Overlap at birth is rejected either way.
+  bool self_collision = true;
+  /// Contacts keep the point where they began while their friction force stays inside the
+  /// friction cone (Bullet's friction anchors), so a body at rest stays where it is. Off (Bullet's
+  /// default, and what runs stored before this key used): resting contacts slip a little every step
+  /// and a passive body creeps, which evolution selects for (docs/physics-and-tasks.md, "No motion
+  /// from nothing").
+  bool friction_anchors = true;
+  /// m of overlap a contact keeps without correction: only deeper overlap is pushed apart, so a
+  /// resting contact is not pushed out and dropped back every step (Box2D's linear slop).
+  double contact_slop = 0.001;
+  /// Share of a contact's overlap (beyond contact_slop) removed per Bullet step (Bullet's erp2).
+  double contact_erp = 0.2;
   int solver_iterations = 20;
   double max_speed = 50;                 ///< m / s: any part faster has exploded
   double max_displacement = 100;         ///< m: any part farther from its start has exploded
   double penetration_tolerance = 0.002;  ///< m of overlap allowed between non-adjacent parts at
                                          ///< birth
   double max_wall_seconds = 60;          ///< wall-clock bound of one evaluation (0 = none)
+  /// Largest rise of the body's mechanical energy that gravity and the effectors do not explain,
+  /// in units of its weight times its length (m 9.81 m/s^2 L); more ends the evaluation as
+  /// exploded. The effectors' share is bounded by torque limit x |command| x |joint speed|.
+  /// 0: not watched.
+  double max_energy_gain = 1.0;
 
   /// Declares the [physics] keys, bound to this object, with their ranges.
   void declareSettings(SettingsSchema& schema);

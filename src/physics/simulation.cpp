@@ -7,6 +7,13 @@
 
 namespace cambrian {
 
+namespace {
+
+// the unit of physics.max_energy_gain, m/s^2, whatever physics.gravity is
+constexpr double kStandardGravity = 9.81;
+
+}  // namespace
+
 Simulation::Simulation(const BodyPlan& plan, const ControllerPlan* controller,
                        const Environment& environment, const PhysicsSettings& settings,
                        double birth_height)
@@ -28,6 +35,15 @@ Simulation::Simulation(const BodyPlan& plan, const ControllerPlan* controller,
   for (std::size_t i = 0; i < plan_.parts.size(); ++i)
     birth_position_[i] = world_->partPosition(static_cast<int>(i));
   previous_position_ = birth_position_;
+
+  // the energy watch: its unit and its starting balance
+  double mass = 0, length = bodyLength(plan_);
+  for (const PartPlan& part : plan_.parts) {
+    mass += part.mass;
+    length = std::max({length, part.size.x, part.size.y, part.size.z});
+  }
+  energy_scale_ = mass * kStandardGravity * length;
+  lowest_balance_ = world_->mechanicalEnergy();
 }
 
 Simulation::~Simulation() = default;
@@ -92,6 +108,23 @@ void Simulation::monitor() {
       return;
     }
     previous_position_[i] = position;
+  }
+  watchEnergy();
+}
+
+void Simulation::watchEnergy() {
+  // energy minus the effectors' work bound never rises in exact dynamics; any rise over any
+  // stretch of steps is energy from nothing (a contact or limit correction, the integrator)
+  const double balance = world_->mechanicalEnergy() - world_->effectorWorkBound();
+  lowest_balance_ = std::min(lowest_balance_, balance);
+  unexplained_energy_ = std::max(unexplained_energy_, balance - lowest_balance_);
+  const double allowed = settings_.max_energy_gain * energy_scale_;
+  if (settings_.max_energy_gain > 0 && unexplained_energy_ > allowed) {
+    std::ostringstream message;
+    message << "the body gained " << unexplained_energy_
+            << " J that gravity and its effectors do not explain (physics.max_energy_gain "
+            << settings_.max_energy_gain << " x " << energy_scale_ << " J) at step " << steps_;
+    fail(EvalStatus::exploded, message.str());
   }
 }
 

@@ -63,10 +63,18 @@ class Simulation {
   const std::vector<double>& commands() const { return commands_; }
   /// The controller (null when the creature has none).
   const Controller* controller() const { return controller_.get(); }
+  /// The largest rise of mechanical energy so far, over any stretch of steps, that gravity and
+  /// the effectors' work bound do not explain, J (World::mechanicalEnergy, effectorWorkBound).
+  /// Exact dynamics with friction, damping and inelastic contacts never makes it positive.
+  double unexplainedEnergy() const { return unexplained_energy_; }
+  /// The unit of physics.max_energy_gain for this body: its weight under 9.81 m/s^2 times its
+  /// length (the larger of its horizontal span and its largest part side), J.
+  double energyScale() const { return energy_scale_; }
 
  private:
   void readSensors();
   void monitor();
+  void watchEnergy();
   void fail(EvalStatus status, std::string message);
 
   const BodyPlan& plan_;
@@ -80,6 +88,9 @@ class Simulation {
 
   std::vector<double> sensors_, drives_, commands_;
   std::vector<Vec3> birth_position_, previous_position_;
+  double energy_scale_ = 0;
+  double lowest_balance_ = 0;  // lowest energy minus work bound so far
+  double unexplained_energy_ = 0;
 };
 
 }  // namespace cambrian

@@ -51,6 +51,12 @@ class World {
   virtual double lowestPoint() const = 0;
   /// World pose of free object `object` of the environment (Environment::objects order).
   virtual Transform objectPose(int object) const = 0;
+  /// The creature's mechanical energy, J: kinetic plus gravitational (m g z, z = 0 at the ground)
+  /// of every body the world simulates for it.
+  virtual double mechanicalEnergy() const = 0;
+  /// An upper bound on the work the effectors have done since birth, J: the sum over steps of
+  /// torque limit x |command| x |joint speed| x time (no motor or torque can deliver more).
+  virtual double effectorWorkBound() const = 0;
 };
 
 /// Makes a world of one kind: the plan, the environment, the physics settings and the height of

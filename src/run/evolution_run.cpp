@@ -166,7 +166,7 @@ class EvolutionRun {
   // kept, the breeder and digest state restored
   void resume(CheckpointState checkpoint) {
     const std::string path = checkpointPath(run_.out_dir);
-    checkResumeSettings(path, checkpoint.config_text, run_.config_text, run_.default_config_text,
+    checkResumeSettings(path, checkpoint.config_text, run_.config_text, run_.earlier_config_text,
                         run_.run_only);
     // another build may evaluate creatures differently: allowed, but said
     if (checkpoint.cambrian_version != kVersion || checkpoint.git_hash != kGitHash)

@@ -20,11 +20,11 @@ std::string resultConfigHash(const std::string& config_text,
 
 void checkResumeSettings(const std::string& path, const std::string& saved_config_text,
                          const std::string& current_config_text,
-                         const std::string& default_config_text,
+                         const std::string& earlier_config_text,
                          const std::set<std::string>& run_only) {
   std::map<std::string, std::string> saved = iniValues(saved_config_text);
   std::map<std::string, std::string> current = iniValues(current_config_text);
-  std::map<std::string, std::string> defaults = iniValues(default_config_text);
+  std::map<std::string, std::string> earlier = iniValues(earlier_config_text);
 
   // every key of either side, in order
   std::set<std::string> keys;
@@ -37,11 +37,18 @@ void checkResumeSettings(const std::string& path, const std::string& saved_confi
       continue;
     auto old_value = saved.find(key);
     auto new_value = current.find(key);
-    // a key added since the checkpoint, left at its default: the old behaviour
-    auto default_value = defaults.find(key);
-    if (old_value == saved.end() && new_value != current.end() && default_value != defaults.end() &&
-        default_value->second == new_value->second)
-      continue;
+    // a key added since the checkpoint, at the value runs used before it existed: no change
+    auto earlier_value = earlier.find(key);
+    if (old_value == saved.end() && new_value != current.end() && earlier_value != earlier.end()) {
+      if (earlier_value->second == new_value->second)
+        continue;
+      throw Error(ExitCode::checkpoint,
+                  path + ": setting " + key + " did not exist when the checkpoint was written; " +
+                      "that run behaved as " + key + " = " + earlier_value->second +
+                      ", and it is '" + new_value->second + "' now; it changes results: set " +
+                      key + " = " + earlier_value->second +
+                      " to continue the run, or start over with --fresh");
+    }
     std::string before = old_value == saved.end() ? "(absent)" : "'" + old_value->second + "'";
     std::string after = new_value == current.end() ? "(absent)" : "'" + new_value->second + "'";
     if (before != after) {

@@ -15,12 +15,13 @@ std::string resultConfigHash(const std::string& config_text, const std::set<std:
 
 /// Compares the settings of a checkpoint with the current ones, key by key. Throws
 /// Error(checkpoint) naming `path`, the first differing key that changes results, its old and
-/// its new value, when one differs. A key the checkpoint lacks is no change when its current
-/// value is its default in `default_config_text` (a setting added after the checkpoint was
-/// written, whose default is how the older cambrian behaved).
+/// its new value, when one differs. A key the checkpoint lacks (a setting added after it was
+/// written) is no change when its current value is what runs before the key used, as
+/// `earlier_config_text` says (SettingsSchema::earlierRunsIniText); otherwise the message says
+/// which value continues the run.
 void checkResumeSettings(const std::string& path, const std::string& saved_config_text,
                          const std::string& current_config_text,
-                         const std::string& default_config_text,
+                         const std::string& earlier_config_text,
                          const std::set<std::string>& run_only);
 
 }  // namespace cambrian

@@ -29,7 +29,8 @@ struct RunSettings {
   bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
   bool fresh = false;       ///< ignore and remove an existing checkpoint, start over
   std::string config_text;  ///< the effective settings as INI text, stored in the history
-  std::string default_config_text;     ///< every setting at its default, same form (resume check)
+  std::string earlier_config_text;     ///< what each setting was in runs stored before it existed,
+                                       ///< same form (SettingsSchema::earlierRunsIniText; resume)
   std::set<std::string> run_only;      ///< keys that change no result (the schema's run-only keys)
   std::vector<MeasureInfo> measures;   ///< the task's measures: history and table columns
   int rank_count = 1;                  ///< MPI ranks of the run, stored in the history

@@ -25,9 +25,10 @@ struct EpisodeSettings {
   double resettle_time = 0.5;   ///< s, controller off again before measuring
   /// Chaumont et al. 3.3's rest rule: each settle phase (controller off) lasts until every part
   /// has moved slower than `rest_speed` for `rest_time` in a row (and at least its settle_time or
-  /// resettle_time); a creature not at rest within `settle_max_time` ends `unstable`. Off: the
+  /// resettle_time); a creature not at rest within `settle_max_time` ends `unstable`. On by
+  /// default: a body still falling from its birth pose must not be measured as moving. Off: the
   /// settle phases last exactly settle_time and resettle_time.
-  bool rest_check = false;
+  bool rest_check = true;
   double rest_speed = 0.2;       ///< m/s, fastest part centre of mass at rest (1/300 m per 1/60 s)
   double rest_time = 0.5;        ///< s of consecutive steps at rest
   double settle_max_time = 5.0;  ///< s, the longest a settle phase may last with rest_check

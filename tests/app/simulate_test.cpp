@@ -193,7 +193,7 @@ TEST(SimulateCommand, RestCheck) {
                                           "connection 0 -> 1 position 0 0 1\n"
                                           "connection 1 -> 2 orientation 0 1.5708 0\n"
                                           "end\n";
-  auto off = runCambrian("simulate --genome " + path + kShort);
+  auto off = runCambrian("simulate --genome " + path + kShort + " --task.rest_check false");
   ASSERT_EQ(off.exit_code, 0) << off.output;
   EXPECT_EQ(lineStartingWith(off.output, "status"), "status     ok") << off.output;
   auto on = runCambrian("simulate --genome " + path + kShort + " --task.rest_check true");

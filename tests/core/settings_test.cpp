@@ -32,7 +32,7 @@ struct Fixture {
     schema.add("b.integer", integer, "an integer");
     schema.add("a.count", count, "a count").runOnly();
     schema.addSeed("a.seed", seed, "a seed");
-    schema.add("b.flag", flag, "a flag");
+    schema.add("b.flag", flag, "a flag").earlierRunsUsed("true");
     schema.add("b.text", text, "a word").oneOf({"walk", "jump"});
     schema.add("b.list", list, "paths");
     schema.addChoice("b.colour", colour, {{"red", Colour::red}, {"green", Colour::green}},
@@ -150,6 +150,16 @@ TEST(Settings, RunOnlyKeysAreDeclaredOnceAndLeftOutOfTheResultText) {
   const std::string without = iniTextWithout(f.schema.iniText(), f.schema.runOnlyKeys());
   EXPECT_EQ(without.find("count"), std::string::npos);
   EXPECT_NE(without.find("seed = 1"), std::string::npos);
+}
+
+// a key newer than some stored runs says what they used; the others used their defaults
+TEST(Settings, KeysNewerThanStoredRunsSayWhatThoseUsed) {
+  Fixture f;
+  EXPECT_EQ(f.schema.earlierRunValues(), (std::map<std::string, std::string>{{"b.flag", "true"}}));
+  const std::string earlier = f.schema.earlierRunsIniText();
+  EXPECT_NE(earlier.find("flag = true\n"), std::string::npos) << earlier;
+  EXPECT_NE(earlier.find("real = 0.25\n"), std::string::npos) << earlier;
+  EXPECT_NE(f.schema.defaultIniText().find("flag = false\n"), std::string::npos);
 }
 
 TEST(Settings, ResetRestoresTheDefaults) {

@@ -181,12 +181,20 @@ TEST(Simulation, SaturatedMotorWithAbsurdStrengthStaysFinite) {
   EXPECT_EQ(simulation.status(), EvalStatus::ok) << simulation.message();
 }
 
-// an absurdly strong explicit torque breaks the physics and is caught as a status, not a crash
+// an absurdly strong explicit torque breaks the physics and is caught as a status, not a crash:
+// by the energy watch first, by the speed monitor when the watch is off
 TEST(Simulation, ExplosionIsCaught) {
   TestCreature creature = hinged(1.0);
   PhysicsSettings settings;
   settings.actuation = Actuation::torque;
   settings.strength_per_area = 1e12;
+  Sim watched(creature, settings);
+  for (int s = 0; s < 2400 && watched.simulation.status() == EvalStatus::ok; ++s)
+    watched.simulation.step(true);
+  EXPECT_EQ(watched.simulation.status(), EvalStatus::exploded);
+  EXPECT_NE(watched.simulation.message().find("physics.max_energy_gain"), std::string::npos)
+      << watched.simulation.message();
+  settings.max_energy_gain = 0;
   Sim sim(creature, settings);
   Simulation& simulation = sim.simulation;
   for (int s = 0; s < 2400 && simulation.status() == EvalStatus::ok; ++s)

@@ -92,6 +92,7 @@ TEST(CreatureSettings, RangesAreChecked) {
 // the rest rule's room: settle_max_time must hold the settle phases and the rest
 TEST(CreatureSettings, RestRuleNeedsRoom) {
   CreatureSettings settings;
+  settings.set("task.rest_check", "false");
   settings.set("task.settle_max_time", "0.2");
   EXPECT_NO_THROW(settings.check());
   settings.set("task.rest_check", "true");

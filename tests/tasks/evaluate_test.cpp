@@ -35,6 +35,13 @@ CreatureSettings settingsWith(
   settings.check();
   return settings;
 }
+CreatureSettings settingsWith(const std::vector<std::pair<std::string, std::string>>& changes) {
+  CreatureSettings settings;
+  for (const auto& [key, value] : changes)
+    settings.set(key, value);
+  settings.check();
+  return settings;
+}
 
 // a 3 s walk, so the suite stays quick, with `changes` applied
 CreatureSettings shortWalk(
@@ -304,34 +311,64 @@ TEST(Evaluate, Normalisations) {
   EXPECT_GT(by_chaumont.fitness, 0);
 }
 
+// the walk the fixtures below were evolved on (no rest check), with `more` settings
+std::vector<std::pair<std::string, std::string>> evolvedOn(
+    std::vector<std::pair<std::string, std::string>> more = {}) {
+  more.insert(more.begin(), {"task.rest_check", "false"});
+  return more;
+}
+// ... and under the physics before friction anchors, contact slop and the energy watch
+std::vector<std::pair<std::string, std::string>> earlierPhysics(
+    std::vector<std::pair<std::string, std::string>> more = {}) {
+  more.insert(more.end(), {{"physics.friction_anchors", "false"},
+                           {"physics.contact_slop", "0"},
+                           {"physics.max_energy_gain", "0"}});
+  return evolvedOn(more);
+}
+
 // a two-part creature evolved under explicit torques that gains energy from the integrator
-// (a thin plate driven hard through a spherical joint); a saturated motor takes the gain away
+// (a thin plate driven hard through a spherical joint); a saturated motor takes the gain away,
+// and under torques the energy watch ends it as exploded
 TEST(Evaluate, SaturatedMotorsDenyTheIntegratorExploit) {
   Genome exploit = graph::graphGenome(readGenomeFile(
       std::string(CAMBRIAN_SOURCE_DIR) + "/tests/tasks/data/integrator_exploit.genome"));
   // the full 10 s walk it was evolved on
-  Outcome with_torque = evaluateGraph(exploit, settingsWith({{"physics.actuation", "torque"}}));
-  Outcome with_motor = evaluateGraph(exploit, settingsWith());
+  Outcome with_motor = evaluateGraph(exploit, settingsWith(evolvedOn()));
   ASSERT_EQ(with_motor.status, EvalStatus::ok) << with_motor.message;
   EXPECT_LT(with_motor.measure("distance"), 1.0);
+  Outcome watched =
+      evaluateGraph(exploit, settingsWith(evolvedOn({{"physics.actuation", "torque"}})));
+  EXPECT_EQ(watched.status, EvalStatus::exploded);
+  EXPECT_NE(watched.message.find("physics.max_energy_gain"), std::string::npos) << watched.message;
   // the fixture still is what it claims to be (about 10 m/s under explicit torques)
+  Outcome with_torque =
+      evaluateGraph(exploit, settingsWith(earlierPhysics({{"physics.actuation", "torque"},
+                                                          {"physics.self_collision", "false"}})));
+  ASSERT_EQ(with_torque.status, EvalStatus::ok) << with_torque.message;
   EXPECT_GT(with_torque.measure("distance"), 20.0);
 }
 
-// a three-part creature evolved with self-collision on: its motor presses one part into another
-// and Bullet's contact correction launches it (about 10 m/s, in the air); without self-contacts
-// (the default) it stays put
-TEST(Evaluate, NoSelfContactsDenyTheContactPump) {
+// a three-part creature evolved with self-collision on under the earlier physics: its motor
+// presses one part into another and Bullet's contact correction launched it (about 10 m/s, in
+// the air); with friction anchors and contact slop (the defaults) it stays near where it was,
+// and without them the energy watch ends it as exploded within a second
+TEST(Evaluate, SelfContactsCannotBePumped) {
   Genome exploit = graph::graphGenome(readGenomeFile(
       std::string(CAMBRIAN_SOURCE_DIR) + "/tests/tasks/data/self_contact_exploit.genome"));
   // the full 10 s walk it was evolved on
-  Outcome with_contacts =
-      evaluateGraph(exploit, settingsWith({{"physics.self_collision", "true"}}));
-  Outcome without = evaluateGraph(exploit, settingsWith());
-  ASSERT_EQ(without.status, EvalStatus::ok) << without.message;
-  EXPECT_LT(without.measure("distance"), 1.0);
+  Outcome now = evaluateGraph(exploit, settingsWith(evolvedOn()));
+  ASSERT_EQ(now.status, EvalStatus::ok) << now.message;
+  EXPECT_LT(now.measure("distance"), 1.0);
+  Outcome watched =
+      evaluateGraph(exploit, settingsWith(evolvedOn({{"physics.friction_anchors", "false"},
+                                                     {"physics.contact_slop", "0"}})));
+  EXPECT_EQ(watched.status, EvalStatus::exploded) << watched.message;
+  EXPECT_NE(watched.message.find("physics.max_energy_gain"), std::string::npos) << watched.message;
+  EXPECT_LT(watched.steps, 480u);
   // the fixture still is what it claims to be
-  EXPECT_GT(with_contacts.measure("distance"), 20.0);
+  Outcome earlier = evaluateGraph(exploit, settingsWith(earlierPhysics()));
+  ASSERT_EQ(earlier.status, EvalStatus::ok) << earlier.message;
+  EXPECT_GT(earlier.measure("distance"), 20.0);
 }
 
 //---------------------------------------------------------------- the rest check
@@ -353,6 +390,10 @@ end
 // the rest check on, with the default threshold, time and cap
 CreatureSettings withRestCheck(CreatureSettings settings) {
   settings.set("task.rest_check", "true");
+  return settings;
+}
+CreatureSettings withoutRestCheck(CreatureSettings settings) {
+  settings.set("task.rest_check", "false");
   return settings;
 }
 
@@ -382,13 +423,15 @@ class PhaseRecorder : public FrameObserver {
   std::vector<std::vector<Vec3>> positions;
 };
 
-// the rule is off by default, and the default results do not depend on its other settings
-TEST(Evaluate, RestCheckIsOffByDefault) {
-  EXPECT_FALSE(CreatureSettings().episode().rest_check);
-  Outcome swinging = evaluateGraph(pendulum(), shortWalk());
+// the rule is on by default (a body still falling from its birth pose is not measured); off,
+// the results do not depend on its other settings
+TEST(Evaluate, RestCheckIsOnByDefault) {
+  EXPECT_TRUE(CreatureSettings().episode().rest_check);
+  Outcome swinging = evaluateGraph(pendulum(), shortWalk({{"task.rest_check", "false"}}));
   ASSERT_EQ(swinging.status, EvalStatus::ok) << swinging.message;
-  Outcome same = evaluateGraph(
-      pendulum(), shortWalk({{"task.rest_speed", "1e-9"}, {"task.settle_max_time", "0.5"}}));
+  Outcome same = evaluateGraph(pendulum(), shortWalk({{"task.rest_check", "false"},
+                                                      {"task.rest_speed", "1e-9"},
+                                                      {"task.settle_max_time", "0.5"}}));
   EXPECT_TRUE(bitIdentical(same.fitness, swinging.fitness));
   EXPECT_EQ(same.steps, swinging.steps);
 }
@@ -399,7 +442,7 @@ TEST(Evaluate, RestCheckLeavesABlockAtRestAlone) {
   Genome block = creature("single_block.genome");
   for (const char* kind : {"walk", "jump"}) {
     CreatureSettings task = shortWalk({{"task.name", kind}});
-    Outcome off = evaluateGraph(block, task);
+    Outcome off = evaluateGraph(block, withoutRestCheck(task));
     Outcome on = evaluateGraph(block, withRestCheck(task));
     ASSERT_EQ(on.status, EvalStatus::ok) << on.message;
     EXPECT_EQ(on.steps, off.steps) << kind;
@@ -414,7 +457,7 @@ TEST(Evaluate, RestCheckSettleLastsAtLeastTheRestTime) {
   Genome block = creature("single_block.genome");
   CreatureSettings task = shortWalk({{"task.name", "jump"}, {"task.settle_time", "0.1"}});
   const PhysicsSettings physics;
-  Outcome off = evaluateGraph(block, task);
+  Outcome off = evaluateGraph(block, withoutRestCheck(task));
   Outcome on = evaluateGraph(block, withRestCheck(task));
   ASSERT_EQ(on.status, EvalStatus::ok) << on.message;
   const auto steps = [&](double seconds) {
@@ -429,7 +472,7 @@ TEST(Evaluate, RestCheckSettleLastsAtLeastTheRestTime) {
 TEST(Evaluate, RestCheckFindsACreatureThatNeverRests) {
   for (const char* kind : {"walk", "jump"}) {
     CreatureSettings task = shortWalk({{"task.name", kind}});
-    Outcome off = evaluateGraph(pendulum(), task);
+    Outcome off = evaluateGraph(pendulum(), withoutRestCheck(task));
     ASSERT_EQ(off.status, EvalStatus::ok) << off.message;
     Outcome on = evaluateGraph(pendulum(), withRestCheck(task));
     EXPECT_EQ(on.status, EvalStatus::unstable) << kind << ": " << on.message;
