@@ -6,14 +6,17 @@
 //   bare      a minimal Bullet program: world, ground plane, the multibody, one joint motor per
 //             joint set from the sine once a step; nothing else
 //   matched   the bare loop plus what cambrian's world adds inside Bullet: a joint-limit
-//             constraint per joint and passive joint damping each substep
+//             constraint per joint, passive joint damping each substep, and its contact model
+//             (friction anchors, contact slop and contact_erp)
 //   cambrian  the same BodyPlan and sine oscillators run through Simulation: sensors (contact
 //             readout, joint angles, light), the controller, the world (its collider filter,
 //             limits, damping, motors) and the safety monitors
 // All three share cambrian's PhysicsSettings (the defaults, or key=value on the command line):
 // time step, substeps, solver iterations, gravity, ground friction, restitution, actuation,
-// motor speed, strength and self-collision. A setting added to the Featherstone world later must
-// be mirrored in BareLoop by hand to keep the comparison fair.
+// motor speed, strength and self-collision; `--bare key=value` changes them for the bare loop
+// alone (the yardstick: a bare loop at Bullet's usual 1 substep and 10 iterations). A
+// setting added to the Featherstone world later must be mirrored in BareLoop by hand to keep the
+// matched loop equal to cambrian's.
 #include "cambrian/body_plan.hpp"
 #include "cambrian/error.hpp"
 #include "cambrian/math.hpp"
@@ -58,7 +61,8 @@ class UsageError : public Error {
 constexpr const char* kUsage =
     "usage: cambrian_step_cost [options] [physics.KEY=VALUE ...]\n"
     "Microseconds per time step of a chain of N boxes driven by sines: a bare Bullet loop, the\n"
-    "bare loop with cambrian's joint limits and damping (matched), and cambrian's Simulation.\n"
+    "bare loop with cambrian's joint limits, damping and contact model (matched), and cambrian's\n"
+    "Simulation.\n"
     "The physics is cambrian's default [physics] unless overridden by KEY=VALUE (e.g.\n"
     "physics.substeps=1 physics.solver_iterations=10); the bare loops mirror it.\n"
     "options:\n"
@@ -69,6 +73,8 @@ constexpr const char* kUsage =
     "  --frequency HZ   frequency of every joint's sine (1)\n"
     "  --loops LIST     which loops: bare,matched,cambrian (all three)\n"
     "  --tsv            one tab-separated row per chain and loop instead of the tables\n"
+    "  --bare K=V       change physics setting K for the bare loop alone (repeatable; not the\n"
+    "                   time step), e.g. --bare physics.substeps=1\n"
     "  --help           this text\n"
     "exit: 0 every loop ran sound; 1 a loop exploded, stood still or was not born; 2 bad usage\n";
 
@@ -266,13 +272,24 @@ BareLoop::BareLoop(const BodyPlan& plan, const SineOscillatorsPlan& drive,
     : plan_(plan), drive_(drive), physics_(physics), matched_(matched) {
   const int part_count = static_cast<int>(plan.parts.size());
 
-  // world: gravity, solver iterations, the ground plane
+  // world: gravity, solver iterations (matched: cambrian's contact model), the ground plane
   world_.setGravity(btVector3(0, 0, -physics.gravity));
   world_.getSolverInfo().m_numIterations = physics.solver_iterations;
+  if (matched_) {
+    world_.getSolverInfo().m_erp2 = physics.contact_erp;
+    world_.getSolverInfo().m_linearSlop = physics.contact_slop;
+  }
+  // matched: contacts hold their point inside the friction cone, as cambrian's do
+  auto anchor = [&](btCollisionObject& object) {
+    if (matched_ && physics.friction_anchors)
+      object.setCollisionFlags(object.getCollisionFlags() |
+                               btCollisionObject::CF_HAS_FRICTION_ANCHOR);
+  };
   ground_.setCollisionShape(&ground_shape_);
   ground_.setFriction(physics.ground_friction);
   ground_.setRestitution(physics.restitution);
   ground_.setUserIndex(-1);
+  anchor(ground_);
   world_.addCollisionObject(&ground_, btBroadphaseProxy::StaticFilter,
                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
 
@@ -315,6 +332,7 @@ BareLoop::BareLoop(const BodyPlan& plan, const SineOscillatorsPlan& drive,
     collider.setRestitution(part.material.restitution < 0 ? physics.restitution
                                                           : part.material.restitution);
     collider.setUserIndex(i);
+    anchor(collider);
     if (i == 0)
       body_->setBaseCollider(&collider);
     else
@@ -503,7 +521,9 @@ struct Options {
   std::vector<bool> loops = std::vector<bool>(kLoopKinds, true);
   bool tsv = false;
   PhysicsSettings physics;
+  PhysicsSettings bare_physics;                // the bare loop's: physics with the --bare changes
   std::vector<std::string> physics_overrides;  // "key=value" as given
+  std::vector<std::string> bare_overrides;     // --bare "key=value" as given
 };
 
 // `steps` steps of a loop, following its first part; returns the wall time in seconds and adds
@@ -568,7 +588,8 @@ std::vector<LoopRecord> measureChain(int parts, const Options& options) {
     if (kind == kCambrian)
       record.loop = std::make_unique<CambrianLoop>(plan, drive, physics);
     else
-      record.loop = std::make_unique<BareLoop>(plan, drive, physics, kind == kMatched);
+      record.loop = std::make_unique<BareLoop>(
+          plan, drive, kind == kMatched ? physics : options.bare_physics, kind == kMatched);
     record.birth = record.previous = record.loop->firstPartPosition();
     record.trouble = record.loop->trouble();
     records.push_back(std::move(record));
@@ -706,6 +727,13 @@ Options parseArguments(int argc, char** argv) {
       }
     } else if (argument == "--tsv") {
       options.tsv = true;
+    } else if (argument == "--bare") {
+      const std::string change = valueOf(i);
+      if (change.find('=') == std::string::npos || change.rfind("physics.", 0) != 0)
+        throw UsageError("--bare '" + change + "': expected physics.KEY=VALUE");
+      if (change.rfind("physics.time_step=", 0) == 0)
+        throw UsageError("--bare '" + change + "': the loops are compared per step of one length");
+      options.bare_overrides.push_back(change);
     } else if (argument.find('=') != std::string::npos && argument.rfind("--", 0) != 0) {
       // a physics setting, checked by its own rules
       const std::string key = argument.substr(0, argument.find('='));
@@ -728,6 +756,22 @@ Options parseArguments(int argc, char** argv) {
     schema.check();
   } catch (const std::exception& e) {
     throw UsageError(e.what());
+  }
+
+  // the bare loop's physics: the same, with the --bare changes
+  options.bare_physics = options.physics;
+  SettingsSchema bare_schema;
+  options.bare_physics.declareSettings(bare_schema);
+  for (const std::string& change : options.bare_overrides) {
+    const std::string key = change.substr(0, change.find('='));
+    if (!bare_schema.find(key))
+      throw UsageError("--bare '" + change + "': " + key + " is not a [physics] setting");
+    try {
+      bare_schema.set(key, change.substr(change.find('=') + 1));
+      bare_schema.check();
+    } catch (const std::exception& e) {
+      throw UsageError("--bare '" + change + "': " + e.what());
+    }
   }
   return options;
 }
@@ -792,12 +836,18 @@ void printHeader(const Options& options) {
     for (const std::string& override_text : options.physics_overrides)
       std::cout << " " << override_text;
   }
+  if (!options.bare_overrides.empty()) {
+    std::cout << "; the bare loop with";
+    for (const std::string& change : options.bare_overrides)
+      std::cout << " " << change;
+  }
   std::cout << "\ntiming: " << options.warmup_seconds << " s warm-up, then " << options.rounds
             << " rounds x " << options.block_seconds << " s simulated ("
             << std::max<std::uint64_t>(1, stepsIn(options.block_seconds, p.time_step))
             << " steps) per loop, interleaved; median (min-max) us per step\n"
-            << "loops: bare = Bullet + motors; matched = bare + cambrian's joint limits and "
-               "damping; cambrian = Simulation (sensors, controller, world, monitors)\n\n";
+            << "loops: bare = Bullet + motors; matched = bare + cambrian's joint limits, "
+               "damping and contact model; cambrian = Simulation (sensors, controller, world, "
+               "monitors)\n\n";
 }
 
 // "median (min-max)" µs per step of a loop

@@ -38,26 +38,39 @@ int objectIndex(int k) {
 
 // a part's collider: collides with the ground and, while `self_contacts` is set, with the
 // creature's other parts except its parent and children (the joint neighbours), also across
-// the virtual links of multi-degree-of-freedom joints
+// the virtual links of multi-degree-of-freedom joints. Its user index is its part, its second
+// user index its parent part (read without a dynamic_cast: this test runs for every pair)
 class PartCollider : public btMultiBodyLinkCollider {
  public:
   PartCollider(btMultiBody* body, int link, int part, int parent_part, const bool* self_contacts)
-      : btMultiBodyLinkCollider(body, link),
-        part_(part),
-        parent_part_(parent_part),
-        self_contacts_(self_contacts) {}
+      : btMultiBodyLinkCollider(body, link), self_contacts_(self_contacts) {
+    setUserIndex(part);
+    setUserIndex2(parent_part);
+  }
 
   bool checkCollideWithOverride(const btCollisionObject* other_object) const override {
-    const auto* other = dynamic_cast<const PartCollider*>(other_object);
+    const btMultiBodyLinkCollider* other = btMultiBodyLinkCollider::upcast(other_object);
     if (!other || other->m_multiBody != m_multiBody)
       return true;
     if (!*self_contacts_)
       return false;
-    return other->part_ != parent_part_ && other->parent_part_ != part_;
+    return other->getUserIndex() != getUserIndex2() && other->getUserIndex2() != getUserIndex();
   }
 
-  int part_, parent_part_;
+ private:
   const bool* self_contacts_;
+};
+
+// a saturated motor: while its torque budget is zero it adds no solver row (a row bounded to
+// [0, 0] changes no velocity, and setting it up costs a solve of the whole body)
+class BudgetMotor : public btMultiBodyJointMotor {
+ public:
+  using btMultiBodyJointMotor::btMultiBodyJointMotor;
+  void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
+                            const btContactSolverInfo& info) override {
+    if (getMaxAppliedImpulse() > 0)
+      btMultiBodyJointMotor::createConstraintRows(rows, data, info);
+  }
 };
 
 // the collision shape of a part or object (capsules and cylinders along their x axis)
@@ -132,7 +145,7 @@ struct FeatherstoneObjects {
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<PartCollider>> colliders;  // one per part, BodyPlan order
   std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
-  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;  // one per effector (or null)
+  std::vector<std::unique_ptr<BudgetMotor>> motors;  // one per effector (or null)
   std::unique_ptr<btMultiBody> body;
   std::vector<std::unique_ptr<btCollisionShape>> object_shapes;
   std::vector<std::unique_ptr<btDefaultMotionState>> object_states;
@@ -315,7 +328,6 @@ void FeatherstoneWorld::build(double birth_height) {
     collider->setFriction(part.material.friction);
     collider->setRestitution(part.material.restitution < 0 ? physics_.restitution
                                                            : part.material.restitution);
-    collider->setUserIndex(i);
     anchorFriction(*collider);
     if (i == 0) {
       body.setBaseCollider(collider.get());
@@ -348,7 +360,7 @@ void FeatherstoneWorld::build(double birth_height) {
         b.motors.push_back(nullptr);
         continue;
       }
-      b.motors.push_back(std::make_unique<btMultiBodyJointMotor>(&body, link, 0.0, 0.0));
+      b.motors.push_back(std::make_unique<BudgetMotor>(&body, link, 0.0, 0.0));
       b.world.addMultiBodyConstraint(b.motors.back().get());
     }
   }

@@ -20,6 +20,10 @@ Simulation::Simulation(const BodyPlan& plan, const ControllerPlan* controller,
     : plan_(plan), environment_(environment), settings_(settings) {
   // the controller first (a plan that does not fit the body throws), then the world
   sensors_.assign(plan_.sensors.size(), 0.0);
+  for (const SensorPlan& sensor : plan_.sensors) {
+    reads_contacts_ = reads_contacts_ || sensor.kind == SensorKind::contact;
+    reads_light_ = reads_light_ || sensor.kind == SensorKind::photo;
+  }
   drives_.assign(plan_.effectors.size(), 0.0);
   commands_.assign(plan_.effectors.size(), 0.0);
   if (controller)
@@ -56,9 +60,11 @@ void Simulation::fail(EvalStatus status, std::string message) {
 }
 
 void Simulation::readSensors() {
-  // contacts and the light's direction from the root, then every sensor slot
-  const std::vector<std::uint8_t>& contact = world_->contacts();
-  const Vec3 to_light = world_->directionInPart(0, environment_.light);
+  // contacts and the light's direction from the root (when a sensor reads them), then every
+  // sensor slot
+  static const std::vector<std::uint8_t> kNoContacts;
+  const std::vector<std::uint8_t>& contact = reads_contacts_ ? world_->contacts() : kNoContacts;
+  const Vec3 to_light = reads_light_ ? world_->directionInPart(0, environment_.light) : Vec3{};
   for (std::size_t s = 0; s < plan_.sensors.size(); ++s) {
     const SensorPlan& sensor = plan_.sensors[s];
     switch (sensor.kind) {

@@ -87,6 +87,7 @@ class Simulation {
   std::uint64_t steps_ = 0;
 
   std::vector<double> sensors_, drives_, commands_;
+  bool reads_contacts_ = false, reads_light_ = false;  // what the sensors need of the world
   std::vector<Vec3> birth_position_, previous_position_;
   double energy_scale_ = 0;
   double lowest_balance_ = 0;  // lowest energy minus work bound so far
