@@ -20,8 +20,9 @@ continues). `report` prints a Markdown table per variant: the median and 90th pe
 relative error of the mean distance, the share of creatures within 10 % of the reference, the
 share that *agree* with it (within 10 % or within two standard errors of the difference of the
 means: a creature whose own chaos spreads its distance cannot be pinned closer), the median
-time the path stays with the reference, failures, and the cost per evaluation relative to the
-variant named `default`. Exit codes: 0 ok, 2 usage, 4 bad input.
+time the path stays with the reference's under the same nudge (for the reference itself: how
+long a nudged run stays with the unnudged one — chaos alone), failures, and the cost per
+evaluation relative to the variant named `default`. Exit codes: 0 ok, 2 usage, 4 bad input.
 """
 
 import argparse
@@ -56,9 +57,22 @@ VARIANTS = {
     "480Hz x1, 20 it": {"physics.time_step": "0.0020833333333333333", "physics.substeps": "1", "physics.solver_iterations": "20"},
     "1kHz x1, 10 it": {"physics.time_step": "0.001", "physics.substeps": "1", "physics.solver_iterations": "10"},
     "1kHz x1, 20 it": {"physics.time_step": "0.001", "physics.substeps": "1", "physics.solver_iterations": "20"},
+    "240Hz x2, 20 it, tol 1e-3": {"physics.time_step": "0.004166666666666667", "physics.substeps": "2", "physics.solver_iterations": "20", "physics.solver_tolerance": "0.001"},
+    "240Hz x2, 20 it, tol 1e-4": {"physics.time_step": "0.004166666666666667", "physics.substeps": "2", "physics.solver_iterations": "20", "physics.solver_tolerance": "0.0001"},
+    "240Hz x1, 20 it, tol 1e-3": {"physics.time_step": "0.004166666666666667", "physics.substeps": "1", "physics.solver_iterations": "20", "physics.solver_tolerance": "0.001"},
     "60Hz x1, 20 it": {"physics.time_step": "0.016666666666666666", "physics.substeps": "1", "physics.solver_iterations": "20"},
     "60Hz x4, 20 it": {"physics.time_step": "0.016666666666666666", "physics.substeps": "4", "physics.solver_iterations": "20"},
 }
+VARIANTS["240Hz x1, 10 it, tol 1e-3"] = {**VARIANTS["240Hz x1, 10 it"], "physics.solver_tolerance": "0.001"}
+# a variant that names no tolerance iterates fully (0), whatever today's default
+for settings in VARIANTS.values():
+    if settings:
+        settings.setdefault("physics.solver_tolerance", "0")
+# the ground contact model of before physics.ground_contact_corners, at the default steps
+VARIANTS["240Hz x1, 20 it, tol 1e-3, one new ground point a step"] = {
+    **VARIANTS["240Hz x1, 20 it, tol 1e-3"], "physics.ground_contact_corners": "false"}
+VARIANTS["240Hz x2, 20 it, tol 1e-3, one new ground point a step"] = {
+    **VARIANTS["240Hz x2, 20 it, tol 1e-3"], "physics.ground_contact_corners": "false"}
 # the actuation model: explicit torques (Sims) against their own reference
 TORQUE = {"physics.actuation": "torque"}
 for name in ("reference", "240Hz x2, 20 it", "240Hz x1, 10 it"):
@@ -232,9 +246,14 @@ def summarise(rows, out_dir, load_paths=True):
             failed += sum(1 for _, r, _ in runs if r["status"] != "ok")
             costs += [float(r["wall_seconds"]) for _, r, _ in runs]
             if load_paths:
+                # the reference against itself: each nudge against the unnudged run (how soon
+                # chaos alone parts two paths)
                 ref_by_nudge = {n: r for n, r, _ in ref_runs}
+                own = variant in ("reference", "torque: reference")
                 for nudge, row, _ in runs:
-                    ref_row = ref_by_nudge.get(nudge)
+                    if own and nudge == 0:
+                        continue
+                    ref_row = ref_by_nudge.get(0 if own else nudge)
                     if ref_row is None or row["status"] != "ok" or ref_row["status"] != "ok":
                         continue
                     try:

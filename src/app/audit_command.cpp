@@ -247,11 +247,12 @@ int runAudit(int argc, char** argv) {
               candidates.size(), genome_paths.size(),
               candidates.size() - genome_paths.size() - random, random, seed_text.c_str());
   std::printf(
-      "physics        %s world, step %g s, %d substeps, %d iterations, self_collision %s, "
-      "friction_anchors %s, contact_slop %g m\n",
+      "physics        %s world, step %g s, %d substeps, %d iterations (tolerance %g m/s), "
+      "self_collision %s, friction_anchors %s, ground_contact_corners %s, contact_slop %g m\n",
       physics.world.c_str(), physics.time_step, physics.substeps, physics.solver_iterations,
-      physics.self_collision ? "true" : "false", physics.friction_anchors ? "true" : "false",
-      physics.contact_slop);
+      physics.solver_tolerance, physics.self_collision ? "true" : "false",
+      physics.friction_anchors ? "true" : "false",
+      physics.ground_contact_corners ? "true" : "false", physics.contact_slop);
   std::printf("born           %zu (%zu refused at birth)\n", born, candidates.size() - born);
   std::printf("at rest        %zu within %g s (%zu still moving: their energy is audited)\n",
               rested, audit.settle_max, born - rested);

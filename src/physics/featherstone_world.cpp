@@ -225,9 +225,12 @@ void FeatherstoneWorld::build(double birth_height) {
   }
 
   // world: gravity, fixed-step solver settings, ground plane
+  if (physics_.ground_contact_corners)
+    b.configuration.setPlaneConvexMultipointIterations();
   b.world.setGravity(btVector3(0, 0, -physics_.gravity));
   btContactSolverInfo& solver = b.world.getSolverInfo();
   solver.m_numIterations = physics_.solver_iterations;
+  solver.m_leastSquaresResidualThreshold = physics_.solver_tolerance * physics_.solver_tolerance;
   solver.m_erp2 = physics_.contact_erp;
   solver.m_linearSlop = physics_.contact_slop;
   b.ground.setCollisionShape(&b.ground_shape);

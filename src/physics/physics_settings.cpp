@@ -45,6 +45,11 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "contacts hold their point while inside the friction cone (Bullet friction anchors): a "
         "body at rest stays at rest; false: Bullet's default, resting contacts creep")
       .earlierRunsUsed("false");
+  s.add("physics.ground_contact_corners", p.ground_contact_corners,
+        "a part meeting the ground touches it at all its touching corners from the first step "
+        "(Bullet's plane-convex multipoint); false: Bullet's default, one new point a step "
+        "(converges better at 2 substeps)")
+      .earlierRunsUsed("false");
   s.add("physics.contact_slop", p.contact_slop,
         "overlap a contact keeps uncorrected, m (only deeper overlap is pushed apart)")
       .require([&p] { return p.contact_slop >= 0 && p.contact_slop <= 0.1; },
@@ -53,7 +58,14 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
   s.add("physics.contact_erp", p.contact_erp,
         "share of a contact's overlap beyond the slop removed per Bullet step (Bullet's erp2)")
       .require([&p] { return p.contact_erp >= 0 && p.contact_erp <= 1; }, "must be in [0, 1]");
-  s.add("physics.solver_iterations", p.solver_iterations, "constraint solver iterations per step")
+  s.add("physics.solver_tolerance", p.solver_tolerance,
+        "stop iterating once no constraint row changes a velocity by more than this, m/s (0: "
+        "always physics.solver_iterations)")
+      .require([&p] { return p.solver_tolerance >= 0 && std::isfinite(p.solver_tolerance); },
+               "must be >= 0 and finite")
+      .earlierRunsUsed("0");
+  s.add("physics.solver_iterations", p.solver_iterations,
+        "most constraint solver iterations per Bullet step")
       .require([&p] { return p.solver_iterations >= 1 && p.solver_iterations <= 1000; },
                "must be in 1..1000");
   s.add("physics.max_speed", p.max_speed, "a part faster than this has exploded, m/s")

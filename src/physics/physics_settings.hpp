@@ -22,9 +22,10 @@ enum class Actuation : std::uint8_t {
 struct PhysicsSettings {
   std::string world = "featherstone";  ///< the world backend (a registered World)
   double time_step = 1.0 / 240.0;  ///< s, fixed: sensors, controller and monitors run at this rate
-  int substeps = 2;       ///< Bullet steps per time step; 1 lets thin, light, strongly driven parts
-                          ///< gain energy from the integrator at 1/240 s
-  double gravity = 9.81;  ///< m / s^2, pointing down (-z)
+  /// Bullet steps per time step (1: about half the cost, not converged; see
+  /// docs/physics-and-tasks.md, "Converged, cheap defaults")
+  int substeps = 2;
+  double gravity = 9.81;            ///< m / s^2, pointing down (-z)
   double ground_friction = 1.0;     ///< Coulomb coefficient of the ground
   double restitution = 0.0;         ///< of the ground and of parts whose material sets none
   double joint_damping = 0.05;      ///< N m s / rad, passive damping on every joint
@@ -41,12 +42,20 @@ struct PhysicsSettings {
   /// and a passive body creeps, which evolution selects for (docs/physics-and-tasks.md, "No motion
   /// from nothing").
   bool friction_anchors = true;
+  /// A part meeting the ground gets a contact at each of its touching corners from the first
+  /// step (Bullet's plane-convex multipoint), not one new point a step. Off (the default, and
+  /// Bullet's): better converged at 2 substeps (docs/physics-and-tasks.md, "Converged, cheap
+  /// defaults"); on: a box dropped flat lands flat even at 1 substep.
+  bool ground_contact_corners = false;
   /// m of overlap a contact keeps without correction: only deeper overlap is pushed apart, so a
   /// resting contact is not pushed out and dropped back every step (Box2D's linear slop).
   double contact_slop = 0.001;
   /// Share of a contact's overlap (beyond contact_slop) removed per Bullet step (Bullet's erp2).
   double contact_erp = 0.2;
-  int solver_iterations = 20;
+  int solver_iterations = 20;  ///< the most constraint solver iterations per Bullet step
+  /// m/s: the solver stops iterating once no constraint row changes a velocity by more than this
+  /// in an iteration (Bullet's least-squares residual threshold); 0: always solver_iterations
+  double solver_tolerance = 0.001;
   double max_speed = 50;                 ///< m / s: any part faster has exploded
   double max_displacement = 100;         ///< m: any part farther from its start has exploded
   double penetration_tolerance = 0.002;  ///< m of overlap allowed between non-adjacent parts at

@@ -6,6 +6,8 @@
 #include "core/hash.hpp"
 #include "core/settings.hpp"
 
+#include <vector>
+
 namespace cambrian {
 
 std::string resultConfigText(const std::string& config_text,
@@ -32,22 +34,21 @@ void checkResumeSettings(const std::string& path, const std::string& saved_confi
     keys.insert(key);
   for (const auto& [key, value] : current)
     keys.insert(key);
+  std::vector<std::string> continuing, now;  // keys added since, not at their earlier value
   for (const std::string& key : keys) {
     if (run_only.count(key))
       continue;
     auto old_value = saved.find(key);
     auto new_value = current.find(key);
     // a key added since the checkpoint, at the value runs used before it existed: no change
+    // (the others are collected, to name them all at once)
     auto earlier_value = earlier.find(key);
     if (old_value == saved.end() && new_value != current.end() && earlier_value != earlier.end()) {
-      if (earlier_value->second == new_value->second)
-        continue;
-      throw Error(ExitCode::checkpoint,
-                  path + ": setting " + key + " did not exist when the checkpoint was written; " +
-                      "that run behaved as " + key + " = " + earlier_value->second +
-                      ", and it is '" + new_value->second + "' now; it changes results: set " +
-                      key + " = " + earlier_value->second +
-                      " to continue the run, or start over with --fresh");
+      if (earlier_value->second != new_value->second) {
+        continuing.push_back(key + " = " + earlier_value->second);
+        now.push_back(key + " is '" + new_value->second + "'");
+      }
+      continue;
     }
     std::string before = old_value == saved.end() ? "(absent)" : "'" + old_value->second + "'";
     std::string after = new_value == current.end() ? "(absent)" : "'" + new_value->second + "'";
@@ -58,6 +59,19 @@ void checkResumeSettings(const std::string& path, const std::string& saved_confi
                       " now; it changes results, so the run cannot continue with it (restore the "
                       "old value, or start over with --fresh)");
     }
+  }
+  if (!continuing.empty()) {
+    auto joined = [](const std::vector<std::string>& items) {
+      std::string text;
+      for (const std::string& item : items)
+        text += (text.empty() ? "" : ", ") + item;
+      return text;
+    };
+    throw Error(ExitCode::checkpoint,
+                path + ": settings added since the checkpoint was written change its results: " +
+                    "that run behaved as " + joined(continuing) + ", and now " + joined(now) +
+                    "; set " + joined(continuing) + " to continue the run, or start over with " +
+                    "--fresh");
   }
 }
 

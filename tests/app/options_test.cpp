@@ -42,7 +42,7 @@ TEST(OptionsMarkdown, OneTablePerSection) {
             std::string::npos);
   EXPECT_NE(text.find("| `physics.time_step` | 0.00416666666667 |"), std::string::npos);
   EXPECT_NE(text.find("| `physics.substeps` | 2 |"), std::string::npos);
-  EXPECT_NE(text.find("| `physics.self_collision` | false |"), std::string::npos);
+  EXPECT_NE(text.find("| `physics.self_collision` | true |"), std::string::npos);
 }
 
 // a pipe inside a description does not split the table cell

@@ -70,7 +70,8 @@ TEST(Resume, KeysAddedSinceTheCheckpointCompareWithWhatEarlierRunsUsed) {
                         kRunOnly);
   });
   EXPECT_EQ(code, ExitCode::checkpoint);
-  EXPECT_NE(message.find("task.rest_check did not exist when the checkpoint was written"),
+  EXPECT_NE(message.find("that run behaved as task.rest_check = false, and now task.rest_check is "
+                         "'true'"),
             std::string::npos)
       << message;
   EXPECT_NE(message.find("set task.rest_check = false to continue"), std::string::npos) << message;

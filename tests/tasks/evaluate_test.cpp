@@ -317,12 +317,14 @@ std::vector<std::pair<std::string, std::string>> evolvedOn(
   more.insert(more.begin(), {"task.rest_check", "false"});
   return more;
 }
-// ... and under the physics before friction anchors, contact slop and the energy watch
+// ... and under the physics of their day: before friction anchors, contact slop, the energy watch
+// and the solver tolerance
 std::vector<std::pair<std::string, std::string>> earlierPhysics(
     std::vector<std::pair<std::string, std::string>> more = {}) {
   more.insert(more.end(), {{"physics.friction_anchors", "false"},
                            {"physics.contact_slop", "0"},
-                           {"physics.max_energy_gain", "0"}});
+                           {"physics.max_energy_gain", "0"},
+                           {"physics.solver_tolerance", "0"}});
   return evolvedOn(more);
 }
 
