@@ -29,7 +29,10 @@ struct EpisodeSettings {
   /// default: a body still falling from its birth pose must not be measured as moving. Off: the
   /// settle phases last exactly settle_time and resettle_time.
   bool rest_check = true;
-  double rest_speed = 0.2;       ///< m/s, fastest part centre of mass at rest (1/300 m per 1/60 s)
+  /// m/s, fastest part centre of mass at rest: Chaumont's "below the simulator's inaccuracy"
+  /// for Bullet (his ODE figure, 1/300 m per 1/60 s = 0.2 m/s, lets a limb still turning from
+  /// the fall be measured as motion: docs/physics-and-tasks.md, "The rest check")
+  double rest_speed = 0.01;
   double rest_time = 0.5;        ///< s of consecutive steps at rest
   double settle_max_time = 5.0;  ///< s, the longest a settle phase may last with rest_check
 

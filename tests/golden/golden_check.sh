@@ -139,7 +139,8 @@ case $mode in
     # the run's own settings, and the defaults of its day that have changed since
     evolve_args=(--task.name walk --task.evaluation_time 0.5 --evolution.population 8
                  --evolution.generations 5 --seed 21 --run.checkpoint_every 1
-                 --physics.self_collision false --task.rest_check false)
+                 --physics.self_collision false --task.rest_check false
+                 --task.rest_speed 0.2)
     launch=()
     if [ "$np" -gt 1 ]; then
       launch=("$mpiexec" "$npflag" "$np" --oversubscribe)
