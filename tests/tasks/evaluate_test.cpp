@@ -292,7 +292,9 @@ TEST(Evaluate, JumpHeightOfAHoppingCreature) {
             static_cast<std::size_t>(std::llround(task.episode().evaluation_time * 240)));
   const double height = outcome.measure("height");
   EXPECT_EQ(outcome.fitness, height);
-  EXPECT_GT(height, 0.02);  // a few centimetres, far above resting contact jitter
+  // 1-4 cm, depending on the physics settings (contact dynamics are chaotic: the reference gives
+  // 1.8-2.9 cm): far above resting contact jitter (micrometres)
+  EXPECT_GT(height, 0.01);
   EXPECT_NEAR(height, frames.highestWhileMeasured(), 1e-9);
   // the same body without its drive stays on the ground
   Outcome passive = evaluateGraph(withoutEffectors(walker), task);
