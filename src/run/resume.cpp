@@ -35,6 +35,7 @@ void checkResumeSettings(const std::string& path, const std::string& saved_confi
   for (const auto& [key, value] : current)
     keys.insert(key);
   std::vector<std::string> continuing, now;  // keys added since, not at their earlier value
+  std::vector<std::string> changed;          // keys at another value than the checkpoint's
   for (const std::string& key : keys) {
     if (run_only.count(key))
       continue;
@@ -52,27 +53,36 @@ void checkResumeSettings(const std::string& path, const std::string& saved_confi
     }
     std::string before = old_value == saved.end() ? "(absent)" : "'" + old_value->second + "'";
     std::string after = new_value == current.end() ? "(absent)" : "'" + new_value->second + "'";
-    if (before != after) {
-      throw Error(ExitCode::checkpoint,
-                  path + ": setting " + key + " was " + before +
-                      " when the checkpoint was written and is " + after +
-                      " now; it changes results, so the run cannot continue with it (restore the "
-                      "old value, or start over with --fresh)");
-    }
+    if (before != after)
+      changed.push_back(key + " was " + before + " when the checkpoint was written and is " +
+                        after + " now");
+  }
+  auto joined = [](const std::vector<std::string>& items, const char* separator) {
+    std::string text;
+    for (const std::string& item : items)
+      text += (text.empty() ? "" : separator) + item;
+    return text;
+  };
+  // every changed setting named at once, then every newer one
+  std::string message;
+  if (changed.size() == 1) {
+    message = "setting " + changed[0] +
+              "; it changes results, so the run cannot continue with it (restore the old value, "
+              "or start over with --fresh)";
+  } else if (changed.size() > 1) {
+    message = "settings " + joined(changed, "; ") +
+              "; they change results, so the run cannot continue with them (restore the old "
+              "values, or start over with --fresh)";
   }
   if (!continuing.empty()) {
-    auto joined = [](const std::vector<std::string>& items) {
-      std::string text;
-      for (const std::string& item : items)
-        text += (text.empty() ? "" : ", ") + item;
-      return text;
-    };
-    throw Error(ExitCode::checkpoint,
-                path + ": settings added since the checkpoint was written change its results: " +
-                    "that run behaved as " + joined(continuing) + ", and now " + joined(now) +
-                    "; set " + joined(continuing) + " to continue the run, or start over with " +
-                    "--fresh");
+    message += std::string(message.empty() ? "" : "; and ") +
+               "settings added since the checkpoint was written change its results: that run "
+               "behaved as " +
+               joined(continuing, ", ") + ", and now " + joined(now, ", ") + "; set " +
+               joined(continuing, ", ") + " to continue the run, or start over with --fresh";
   }
+  if (!message.empty())
+    throw Error(ExitCode::checkpoint, path + ": " + message);
 }
 
 }  // namespace cambrian

@@ -62,6 +62,22 @@ TEST(Resume, RunOnlyKeysMayChangeOthersMayNot) {
   EXPECT_NE(message.find("task.name was (absent)"), std::string::npos) << message;
 }
 
+// several changed settings, and a newer one, are named in one message
+TEST(Resume, EveryChangedSettingIsNamedAtOnce) {
+  std::string earlier = kConfig + "\n[task]\nrest_check = false\n";
+  std::string changed = kConfig;
+  changed.replace(changed.find("0.004"), 5, "0.002");
+  changed.replace(changed.find("seed = 9"), 8, "seed = 10");
+  changed += "\n[task]\nrest_check = true\n";
+  auto [code, message] =
+      failure([&] { checkResumeSettings("ck.h5", kConfig, changed, earlier, kRunOnly); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("physics.time_step was '0.004'"), std::string::npos) << message;
+  EXPECT_NE(message.find("run.seed was '9'"), std::string::npos) << message;
+  EXPECT_NE(message.find("restore the old values"), std::string::npos) << message;
+  EXPECT_NE(message.find("set task.rest_check = false to continue"), std::string::npos) << message;
+}
+
 TEST(Resume, KeysAddedSinceTheCheckpointCompareWithWhatEarlierRunsUsed) {
   std::string earlier = kConfig + "\n[task]\nrest_check = false\n";
   EXPECT_NO_THROW(checkResumeSettings("ck.h5", kConfig, earlier, earlier, kRunOnly));
