@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace cambrian {
 
@@ -35,17 +34,10 @@ RestAudit auditRest(const BodyPlan& plan, const Environment& environment,
 
   // settle: until every part has been slower than rest_speed for rest_window in a row
   const long window = stepsIn(settings.rest_window, dt), last = stepsIn(settings.settle_max, dt);
-  std::vector<Transform> poses, previous;
-  simulation.partPoses(previous);
   long resting = 0;
   for (long s = 0; s < last && simulation.status() == EvalStatus::ok && resting < window; ++s) {
     simulation.step(false);
-    simulation.partPoses(poses);
-    double fastest = 0;
-    for (std::size_t i = 0; i < poses.size(); ++i)
-      fastest = std::max(fastest, norm(poses[i].position - previous[i].position) / dt);
-    std::swap(poses, previous);
-    resting = fastest < settings.rest_speed ? resting + 1 : 0;
+    resting = simulation.fastestPartSpeed() < settings.rest_speed ? resting + 1 : 0;
   }
   audit.at_rest = simulation.status() == EvalStatus::ok && resting >= window;
   audit.rest_time = simulation.time();

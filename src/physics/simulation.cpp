@@ -86,6 +86,7 @@ void Simulation::readSensors() {
 void Simulation::monitor() {
   const double max_step = settings_.max_speed * settings_.time_step;
   const double max_displacement_sq = settings_.max_displacement * settings_.max_displacement;
+  double largest_step_sq = 0;  // the fastest part's displacement this step, squared
   for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
     Vec3 position = world_->partPosition(static_cast<int>(i));
 
@@ -113,8 +114,10 @@ void Simulation::monitor() {
       fail(EvalStatus::exploded, message.str());
       return;
     }
+    largest_step_sq = std::max(largest_step_sq, dot(moved, moved));
     previous_position_[i] = position;
   }
+  fastest_part_speed_ = std::sqrt(largest_step_sq) / settings_.time_step;
   watchEnergy();
 }
 

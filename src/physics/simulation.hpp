@@ -70,6 +70,9 @@ class Simulation {
   /// The unit of physics.max_energy_gain for this body: its weight under 9.81 m/s^2 times its
   /// length (the larger of its horizontal span and its largest part side), J.
   double energyScale() const { return energy_scale_; }
+  /// The speed of the fastest part's centre over the last step, m/s (0 before the first step):
+  /// what a rest rule compares with its threshold.
+  double fastestPartSpeed() const { return fastest_part_speed_; }
 
  private:
   void readSensors();
@@ -92,6 +95,7 @@ class Simulation {
   double energy_scale_ = 0;
   double lowest_balance_ = 0;  // lowest energy minus work bound so far
   double unexplained_energy_ = 0;
+  double fastest_part_speed_ = 0;  // fastestPartSpeed(), set by monitor()
 };
 
 }  // namespace cambrian

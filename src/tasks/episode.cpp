@@ -97,13 +97,6 @@ Episode::PhaseEnd Episode::runSteps(std::uint64_t steps, bool controller_on, Eva
   const std::uint64_t last = rest ? std::max(steps, stepsIn(settings_.settle_max_time, dt)) : steps;
   std::uint64_t run = 0, longest = 0;
   double fastest = 0;
-  std::vector<Transform> rest_poses;
-  if (rest) {
-    simulation_.partPoses(rest_poses);
-    previous_.resize(rest_poses.size());
-    for (std::size_t i = 0; i < rest_poses.size(); ++i)
-      previous_[i] = rest_poses[i].position;
-  }
   for (Jury* jury : juries)
     jury->begin(simulation_);
 
@@ -121,12 +114,7 @@ Episode::PhaseEnd Episode::runSteps(std::uint64_t steps, bool controller_on, Eva
       return PhaseEnd::stopped;
     // a settle phase with the rest check ends once the body has rested long enough
     if (rest) {
-      simulation_.partPoses(rest_poses);
-      fastest = 0;
-      for (std::size_t i = 0; i < rest_poses.size(); ++i) {
-        fastest = std::max(fastest, norm(rest_poses[i].position - previous_[i]) / dt);
-        previous_[i] = rest_poses[i].position;
-      }
+      fastest = simulation_.fastestPartSpeed();
       run = fastest <= settings_.rest_speed ? run + 1 : 0;
       longest = std::max(longest, run);
       if (run >= rest_needed && s + 1 >= steps)

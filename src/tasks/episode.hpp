@@ -86,7 +86,6 @@ class Episode {
   FrameObserver* observer_ = nullptr;
   std::uint64_t stride_ = 1;
   std::vector<Transform> poses_;  // the observer's and the rest check's pose buffer
-  std::vector<Vec3> previous_;    // the rest check's previous positions
 };
 
 }  // namespace cambrian

@@ -14,12 +14,9 @@
 namespace cambrian {
 namespace {
 
+using test::code;
 using test::lineStartingWith;
 using test::runCambrian;
-
-int code(ExitCode c) {
-  return static_cast<int>(c);
-}
 
 // the fixtures: bodies that crept at rest before friction anchors
 std::string fixture(const std::string& name) {

@@ -1,6 +1,8 @@
 // test helper: run the cambrian executable and capture what it prints and returns
 #pragma once
 
+#include "cambrian/error.hpp"
+
 #include <array>
 #include <cstdio>
 #include <string>
@@ -29,6 +31,11 @@ inline CommandResult runCambrian(const std::string& arguments) {
   int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+/// An exit code as the process returns it.
+inline int code(ExitCode c) {
+  return static_cast<int>(c);
 }
 
 /// The line of `output` that starts with `key`, or "".

@@ -21,12 +21,9 @@
 namespace cambrian {
 namespace {
 
+using test::code;
 using test::lineStartingWith;
 using test::runCambrian;
-
-int code(ExitCode c) {
-  return static_cast<int>(c);
-}
 
 // a number as `replay` prints it (17 significant digits)
 std::string printed(double value) {

@@ -17,15 +17,12 @@
 namespace cambrian {
 namespace {
 
+using test::code;
 using test::lineStartingWith;
 using test::runCambrian;
 
 const std::string kCreatures = std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/";
 const std::string kShort = " --task.evaluation_time 2";
-
-int code(ExitCode c) {
-  return static_cast<int>(c);
-}
 
 // a hand-written creature is evaluated and its outcome printed
 TEST(SimulateCommand, PrintsOutcome) {

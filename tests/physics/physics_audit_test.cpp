@@ -2,6 +2,7 @@
 // whose parts fall onto each other gains no energy, and the energy watch sees what it should.
 #include "physics/physics_audit.hpp"
 
+#include "physics/box_part.hpp"
 #include "physics/simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -11,15 +12,7 @@
 namespace cambrian {
 namespace {
 
-// a box part at `position` (creature frame), density 1000
-PartPlan box(Vec3 size, Vec3 position, int parent = -1) {
-  PartPlan part;
-  part.size = size;
-  part.mass = 1000 * size.x * size.y * size.z;
-  part.pose.position = position;
-  part.parent = parent;
-  return part;
-}
+using test::box;
 
 // a plank on the ground with a passive hinged flap at its +x end
 BodyPlan hingedPlank() {

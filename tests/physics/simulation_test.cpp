@@ -2,6 +2,7 @@
 #include "physics/simulation.hpp"
 
 #include "brain/neural_network.hpp"
+#include "physics/box_part.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,15 +13,7 @@
 namespace cambrian {
 namespace {
 
-// a box part at `position` (creature frame)
-PartPlan box(Vec3 size, Vec3 position, int parent = -1) {
-  PartPlan part;
-  part.size = size;
-  part.mass = 1000 * size.x * size.y * size.z;
-  part.pose.position = position;
-  part.parent = parent;
-  return part;
-}
+using test::box;
 
 // a body and the network that drives it
 struct TestCreature {
