@@ -160,7 +160,9 @@ int runEvolve(int argc, char** argv) {
     if (root) {
       std::cerr << "cambrian evolve: error: " << e.what() << std::endl;
     } else if (e.code() != ExitCode::config && e.code() != ExitCode::usage) {
-      std::cerr << "cambrian evolve: rank " << mpi.rank() << ": error: " << e.what() << std::endl;
+      std::cerr << ("cambrian evolve: rank " + std::to_string(mpi.rank()) + ": error: " + e.what() +
+                    "\n")
+                << std::flush;
     }
   }
   code = mpi.allReduceMax(code);

@@ -154,7 +154,9 @@ int MpiContext::allReduceMax(int value) {
 }
 
 void MpiContext::abort(ExitCode code, const std::string& message) const {
-  std::cerr << "cambrian evolve: rank " << rank_ << ": " << message << std::endl;
+  // one write, so that mpirun's own abort notice cannot land inside the line
+  std::cerr << ("cambrian evolve: rank " + std::to_string(rank_) + ": " + message + "\n")
+            << std::flush;
   MPI_Abort(MPI_COMM_WORLD, static_cast<int>(code));
   std::_Exit(static_cast<int>(code));
 }
