@@ -61,16 +61,121 @@ class PartCollider : public btMultiBodyLinkCollider {
   const bool* self_contacts_;
 };
 
-// a saturated motor: while its torque budget is zero it adds no solver row (a row bounded to
-// [0, 0] changes no velocity, and setting it up costs a solve of the whole body)
-class BudgetMotor : public btMultiBodyJointMotor {
+// what acts along one joint degree of freedom besides its limit, as solver rows on the multibody
+// alone: the joint's damping, solved implicitly (a soft row pulling the speed to zero with
+// compliance 1 / (damping x step), whose solution is the impulse -damping x step x the speed
+// after the step: backward Euler, so it only removes energy, however light the limb), and a
+// saturated motor (a row towards the target speed bounded by the torque budget; none while the
+// budget is zero). Both rows share one Jacobian and one response of the body. Bullet's joint
+// motor fills its row for the body twice, as both sides of the joint: the second side's Jacobian
+// is zero, so it changes no number and costs a solve of the whole body per row and a pass over
+// its velocities per iteration. The rows here use Bullet's arithmetic
+// (btMultiBodyConstraint::fillMultiBodyConstraint) once, so a motor row has the same bits as
+// Bullet's motor.
+class JointDrive : public btMultiBodyJointMotor {
  public:
-  using btMultiBodyJointMotor::btMultiBodyJointMotor;
+  // damping 0: no damping row (the damping is applied explicitly, or there is none)
+  // (finalized here: the solver writes each row's impulse back into the motor's storage)
+  JointDrive(btMultiBody* body, int link, double damping)
+      : btMultiBodyJointMotor(body, link, 0.0, 0.0), damping_(damping) {
+    btMultiBodyJointMotor::finalizeMultiDof();
+  }
+  // the motor's target speed and torque budget for the next Bullet step
+  void setMotor(double target_speed, double max_impulse) {
+    target_speed_ = target_speed;
+    setMaxAppliedImpulse(max_impulse);
+  }
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override {
-    if (getMaxAppliedImpulse() > 0)
-      btMultiBodyJointMotor::createConstraintRows(rows, data, info);
+    const bool damped = damping_ > 0;
+    const bool driven = getMaxAppliedImpulse() > 0;
+    if (!damped && !driven)
+      return;
+    const int jacobian = respond(data);
+    if (damped)
+      addRow(rows, data, jacobian, 0.0, kUnbounded, 1.0 / (damping_ * info.m_timeStep));
+    if (driven)
+      addRow(rows, data, jacobian, target_speed_, getMaxAppliedImpulse(), 0.0);
   }
+
+ private:
+  static constexpr double kUnbounded = 1e30;
+
+  // the Jacobian (the joint coordinate) and the body's response to a unit impulse along it;
+  // returns their index in `data`
+  int respond(btMultiBodyJacobianData& data) {
+    btMultiBody* body = getMultiBodyA();
+    const int dofs = body->getNumDofs() + 6;
+    const int index = data.m_jacobians.size();
+    data.m_jacobians.resize(index + dofs);
+    data.m_deltaVelocitiesUnitImpulse.resize(index + dofs);
+    double* jacobian = &data.m_jacobians[index];
+    std::fill(jacobian, jacobian + dofs, 0.0);
+    jacobian[axisIndex()] = 1;
+    body->calcAccelerationDeltasMultiDof(jacobian, &data.m_deltaVelocitiesUnitImpulse[index],
+                                         data.scratch_r, data.scratch_v);
+    return index;
+  }
+
+  int axisIndex() { return 6 + getMultiBodyA()->getLink(getLinkA()).m_dofOffset; }
+
+  // a row towards `target_speed`, bounded to [-bound, bound], soft by `compliance` (speed per
+  // impulse)
+  void addRow(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data, int jacobian,
+              double target_speed, double bound, double compliance) {
+    btMultiBody* body = getMultiBodyA();
+    const int link = getLinkA();
+    const int axis = axisIndex();
+    btMultiBodySolverConstraint& row = rows.expandNonInitializing();
+    row.m_multiBodyA = body;
+    row.m_multiBodyB = nullptr;
+    row.m_linkA = link;
+    row.m_linkB = -1;
+    row.m_solverBodyIdA = -1;
+    row.m_solverBodyIdB = -1;
+    row.m_orgConstraint = this;
+    row.m_orgDofIndex = 0;
+    row.m_originalContactPoint = nullptr;
+    row.m_jacAindex = jacobian;
+
+    // the body's slot of velocity changes, shared by all its rows in this solve
+    row.m_deltaVelAindex = body->getCompanionId();
+    if (row.m_deltaVelAindex < 0) {
+      row.m_deltaVelAindex = data.m_deltaVelocities.size();
+      body->setCompanionId(row.m_deltaVelAindex);
+      data.m_deltaVelocities.resize(data.m_deltaVelocities.size() + body->getNumDofs() + 6);
+    }
+
+    // the joint's inverse inertia and speed; a row Bullet would disable stays inert
+    const double inverse_inertia = data.m_deltaVelocitiesUnitImpulse[jacobian + axis];
+    const double speed = body->getVelocityVector()[axis];
+    row.m_jacDiagABInv =
+        inverse_inertia > SIMD_EPSILON ? 1.0 / (inverse_inertia + compliance) : 0.0;
+    row.m_friction = 0;
+    row.m_appliedImpulse = 0;
+    row.m_appliedPushImpulse = 0;
+    // Bullet's motor: its target, then the velocity error (kp = 0, kd = 1)
+    const double desired = speed + (target_speed - speed);
+    row.m_rhs = (desired - speed) * row.m_jacDiagABInv;
+    row.m_rhsPenetration = 0;
+    row.m_cfm = compliance * row.m_jacDiagABInv;
+    row.m_lowerLimit = -bound;
+    row.m_upperLimit = bound;
+
+    // the joint torque or force the row applies, for Bullet's constraint-force bookkeeping
+    const btMultibodyLink& joint = body->getLink(link);
+    const btQuaternion& rotation = joint.m_cachedWorldTransform.getRotation();
+    const bool prismatic = joint.m_jointType == btMultibodyLink::ePrismatic;
+    row.m_contactNormal1 =
+        prismatic ? quatRotate(rotation, joint.m_axes[0].m_bottomVec) : btVector3(0, 0, 0);
+    row.m_contactNormal2 = -row.m_contactNormal1;
+    row.m_relpos1CrossNormal =
+        prismatic ? btVector3(0, 0, 0) : quatRotate(rotation, joint.m_axes[0].m_topVec);
+    row.m_relpos2CrossNormal = -row.m_relpos1CrossNormal;
+  }
+
+  double damping_;
+  double target_speed_ = 0;
 };
 
 // the collision shape of a part or object (capsules and cylinders along their x axis)
@@ -145,7 +250,9 @@ struct FeatherstoneObjects {
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<PartCollider>> colliders;  // one per part, BodyPlan order
   std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
-  std::vector<std::unique_ptr<BudgetMotor>> motors;  // one per effector (or null)
+  // one per jointed link with implicit damping, else one per motor-driven link
+  std::vector<std::unique_ptr<JointDrive>> drives;
+  std::vector<JointDrive*> motors;  // each effector's drive (null: no motor)
   std::unique_ptr<btMultiBody> body;
   std::vector<std::unique_ptr<btCollisionShape>> object_shapes;
   std::vector<std::unique_ptr<btDefaultMotionState>> object_states;
@@ -156,9 +263,8 @@ struct FeatherstoneObjects {
   ~FeatherstoneObjects() {
     for (auto& object : objects)
       world.removeRigidBody(object.get());
-    for (auto& motor : motors)
-      if (motor)
-        world.removeMultiBodyConstraint(motor.get());
+    for (auto& drive : drives)
+      world.removeMultiBodyConstraint(drive.get());
     for (auto& limit : limits)
       world.removeMultiBodyConstraint(limit.get());
     for (auto& collider : colliders)
@@ -355,17 +461,26 @@ void FeatherstoneWorld::build(double birth_height) {
     }
   }
 
-  // saturated motors: one per effector, idle (no impulse) until the controller drives it
-  if (physics_.actuation == Actuation::saturated_motor) {
-    for (const EffectorPlan& effector : plan_.effectors) {
-      int link = dof_link_[effector.part][effector.dof];
-      if (link < 0) {
-        b.motors.push_back(nullptr);
-        continue;
-      }
-      b.motors.push_back(std::make_unique<BudgetMotor>(&body, link, 0.0, 0.0));
-      b.world.addMultiBodyConstraint(b.motors.back().get());
-    }
+  // joint drives: with implicit damping one per jointed link (link order), else one per
+  // effector with a saturated motor (effector order, as Bullet's motors were added)
+  const bool implicit = physics_.implicit_damping && physics_.joint_damping > 0;
+  const bool motor_actuation = physics_.actuation == Actuation::saturated_motor;
+  std::vector<JointDrive*> link_drive(link_count, nullptr);
+  auto addDrive = [&](int link) {
+    b.drives.push_back(
+        std::make_unique<JointDrive>(&body, link, implicit ? physics_.joint_damping : 0.0));
+    b.world.addMultiBodyConstraint(b.drives.back().get());
+    link_drive[link] = b.drives.back().get();
+  };
+  if (implicit) {
+    for (int link : damped_links_)
+      addDrive(link);
+  }
+  for (const EffectorPlan& effector : plan_.effectors) {
+    int link = dof_link_[effector.part][effector.dof];
+    if (motor_actuation && link >= 0 && !link_drive[link])
+      addDrive(link);
+    b.motors.push_back(motor_actuation && link >= 0 ? link_drive[link] : nullptr);
   }
 
   // collider transforms from the zero pose
@@ -464,20 +579,22 @@ Vec3 FeatherstoneWorld::directionInPart(int part, Vec3 point) const {
 void FeatherstoneWorld::applyTorques(std::span<const double> commands, double substep) {
   btMultiBody& body = *bullet_->body;
 
-  // passive damping on every jointed link
-  for (int link : damped_links_)
-    body.addJointTorque(link, -physics_.joint_damping * body.getJointVel(link));
+  // passive damping on every jointed link, when not solved implicitly
+  if (!physics_.implicit_damping) {
+    for (int link : damped_links_)
+      body.addJointTorque(link, -physics_.joint_damping * body.getJointVel(link));
+  }
 
   // saturated motors: the command's sign picks the target speed, its size the torque budget
   if (physics_.actuation == Actuation::saturated_motor) {
     for (std::size_t e = 0; e < bullet_->motors.size(); ++e) {
-      btMultiBodyJointMotor* motor = bullet_->motors[e].get();
+      JointDrive* motor = bullet_->motors[e];
       if (!motor)
         continue;
       double command = commands.empty() ? 0.0 : commands[e];
       int part = plan_.effectors[e].part;
-      motor->setVelocityTarget(command < 0 ? -physics_.motor_speed : physics_.motor_speed);
-      motor->setMaxAppliedImpulse(std::abs(command) * max_torque_[part] * substep);
+      motor->setMotor(command < 0 ? -physics_.motor_speed : physics_.motor_speed,
+                        std::abs(command) * max_torque_[part] * substep);
     }
     return;
   }

@@ -59,6 +59,19 @@ TEST(AuditCommand, CreepersAreCaughtAndGone) {
   EXPECT_EQ(countLines(now.output, "BROKEN"), 0) << now.output;
 }
 
+// the body a zero-strength evolution selected under explicit joint damping creeps with it, and
+// keeps still with the damping solved implicitly (the default)
+TEST(AuditCommand, TheDampingCreeperKeepsStillUnderImplicitDamping) {
+  std::string body = " --random 0 --driven 0 --genome " + fixture("damping_creeper");
+  auto explicit_damping = runCambrian("audit" + body + " --physics.implicit_damping false");
+  EXPECT_EQ(explicit_damping.exit_code, code(ExitCode::audit_failed)) << explicit_damping.output;
+  EXPECT_NE(explicit_damping.output.find("damping_creeper.genome: crept"), std::string::npos)
+      << explicit_damping.output;
+  auto now = runCambrian("audit" + body);
+  EXPECT_EQ(now.exit_code, 0) << now.output;
+  EXPECT_EQ(countLines(now.output, "BROKEN"), 0) << now.output;
+}
+
 // the body a zero-strength evolution selected before the fix keeps still
 TEST(AuditCommand, TheZeroStrengthWalkerKeepsStill) {
   auto result = runCambrian("audit --random 0 --driven 0 --physics.strength_per_area 0 --genome " +

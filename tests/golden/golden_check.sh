@@ -148,11 +148,12 @@ case $mode in
     code=0
     timeout -k 10 "$limit" "${launch[@]}" "$cambrian" evolve --quiet --out "$work/resume_v1" \
       "${evolve_args[@]}" > /dev/null 2> "$work/resume_v1.refused" || code=$?
-    [ "$code" -eq 6 ] && grep -q "set physics.contact_slop = 0, physics.friction_anchors = false, physics.max_energy_gain = 0, physics.solver_tolerance = 0 to continue" \
+    [ "$code" -eq 6 ] && grep -q "set physics.contact_slop = 0, physics.friction_anchors = false, physics.implicit_damping = false, physics.max_energy_gain = 0, physics.solver_tolerance = 0 to continue" \
       "$work/resume_v1.refused" ||
       fail "resume_v1 under today's physics: exit $code, not 6 naming physics.friction_anchors: $(head -n 3 "$work/resume_v1.refused")"
     evolve_args+=(--physics.friction_anchors false --physics.contact_slop 0
-                  --physics.max_energy_gain 0 --physics.solver_tolerance 0)
+                  --physics.implicit_damping false --physics.max_energy_gain 0
+                  --physics.solver_tolerance 0)
     timeout -k 10 "$limit" "${launch[@]}" "$cambrian" evolve --quiet --out "$work/resume_v1" \
       "${evolve_args[@]}" > "$work/resume_v1.out" 2> "$work/resume_v1.err" ||
       fail "resume_v1: exit code $?; stderr: $(head -n 5 "$work/resume_v1.err")"
