@@ -66,6 +66,14 @@ VARIANTS = {
     "60Hz x4, 20 it": {"physics.time_step": "0.016666666666666666", "physics.substeps": "4", "physics.solver_iterations": "20"},
 }
 VARIANTS["240Hz x1, 10 it, tol 1e-3"] = {**VARIANTS["240Hz x1, 10 it"], "physics.solver_tolerance": "0.001"}
+# one Bullet step a time step, at rates between 240 Hz and 480 Hz, at the default tolerance
+for rate in (300, 360):
+    VARIANTS[f"{rate}Hz x1, 20 it, tol 1e-4"] = {
+        "physics.time_step": repr(1 / rate), "physics.substeps": "1",
+        "physics.solver_iterations": "20", "physics.solver_tolerance": "0.0001"}
+# the joint damping model of before physics.implicit_damping, at the default steps
+VARIANTS["default, explicit damping"] = {"physics.implicit_damping": "false",
+                                          "physics.solver_tolerance": "0.0001"}
 # a variant that names no tolerance iterates fully (0), whatever today's default
 for settings in VARIANTS.values():
     if settings:

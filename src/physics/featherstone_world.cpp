@@ -61,121 +61,195 @@ class PartCollider : public btMultiBodyLinkCollider {
   const bool* self_contacts_;
 };
 
-// what acts along one joint degree of freedom besides its limit, as solver rows on the multibody
-// alone: the joint's damping, solved implicitly (a soft row pulling the speed to zero with
-// compliance 1 / (damping x step), whose solution is the impulse -damping x step x the speed
-// after the step: backward Euler, so it only removes energy, however light the limb), and a
-// saturated motor (a row towards the target speed bounded by the torque budget; none while the
-// budget is zero). Both rows share one Jacobian and one response of the body. Bullet's joint
-// motor fills its row for the body twice, as both sides of the joint: the second side's Jacobian
-// is zero, so it changes no number and costs a solve of the whole body per row and a pass over
-// its velocities per iteration. The rows here use Bullet's arithmetic
-// (btMultiBodyConstraint::fillMultiBodyConstraint) once, so a motor row has the same bits as
-// Bullet's motor.
-class JointDrive : public btMultiBodyJointMotor {
+// a saturated motor on one joint degree of freedom: a solver row towards the target speed,
+// bounded by the torque budget, none while the budget is zero (a row bounded to [0, 0] changes
+// no velocity, and setting it up costs a solve of the whole body). Bullet's joint motor fills
+// its row for the body twice, as both sides of the joint: the second side's Jacobian is zero, so
+// it changes no number and costs a solve of the whole body per row and a pass over its
+// velocities per iteration. This row is filled once, with Bullet's arithmetic
+// (btMultiBodyJointMotor and btMultiBodyConstraint::fillMultiBodyConstraint): the same bits.
+class BudgetMotor : public btMultiBodyJointMotor {
  public:
-  // damping 0: no damping row (the damping is applied explicitly, or there is none)
   // (finalized here: the solver writes each row's impulse back into the motor's storage)
-  JointDrive(btMultiBody* body, int link, double damping)
-      : btMultiBodyJointMotor(body, link, 0.0, 0.0), damping_(damping) {
+  BudgetMotor(btMultiBody* body, int link) : btMultiBodyJointMotor(body, link, 0.0, 0.0) {
     btMultiBodyJointMotor::finalizeMultiDof();
   }
-  // the motor's target speed and torque budget for the next Bullet step
-  void setMotor(double target_speed, double max_impulse) {
+  // the target speed and torque budget for the next Bullet step
+  void setCommand(double target_speed, double max_impulse) {
     target_speed_ = target_speed;
     setMaxAppliedImpulse(max_impulse);
   }
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
-                            const btContactSolverInfo& info) override {
-    const bool damped = damping_ > 0;
-    const bool driven = getMaxAppliedImpulse() > 0;
-    if (!damped && !driven)
+                            const btContactSolverInfo& info) override;
+
+ private:
+  double target_speed_ = 0;
+};
+
+void BudgetMotor::createConstraintRows(btMultiBodyConstraintArray& rows,
+                                       btMultiBodyJacobianData& data, const btContactSolverInfo&) {
+  const double bound = getMaxAppliedImpulse();
+  if (bound <= 0)
+    return;
+  btMultiBody* body = getMultiBodyA();
+  const int link = getLinkA();
+  const int dofs = body->getNumDofs() + 6;
+  const int axis = 6 + body->getLink(link).m_dofOffset;
+  btMultiBodySolverConstraint& row = rows.expandNonInitializing();
+  row.m_multiBodyA = body;
+  row.m_multiBodyB = nullptr;
+  row.m_linkA = link;
+  row.m_linkB = -1;
+  row.m_solverBodyIdA = -1;
+  row.m_solverBodyIdB = -1;
+  row.m_orgConstraint = this;
+  row.m_orgDofIndex = 0;
+  row.m_originalContactPoint = nullptr;
+
+  // the body's slot of velocity changes, shared by all its rows in this solve
+  row.m_deltaVelAindex = body->getCompanionId();
+  if (row.m_deltaVelAindex < 0) {
+    row.m_deltaVelAindex = data.m_deltaVelocities.size();
+    body->setCompanionId(row.m_deltaVelAindex);
+    data.m_deltaVelocities.resize(data.m_deltaVelocities.size() + dofs);
+  }
+
+  // Jacobian: the joint coordinate; the body's response to a unit impulse along it
+  row.m_jacAindex = data.m_jacobians.size();
+  data.m_jacobians.resize(row.m_jacAindex + dofs);
+  data.m_deltaVelocitiesUnitImpulse.resize(row.m_jacAindex + dofs);
+  double* jacobian = &data.m_jacobians[row.m_jacAindex];
+  std::fill(jacobian, jacobian + dofs, 0.0);
+  jacobian[axis] = 1;
+  double* response = &data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
+  body->calcAccelerationDeltasMultiDof(jacobian, response, data.scratch_r, data.scratch_v);
+
+  // the joint's inverse inertia and speed; a row Bullet would disable stays inert
+  const double inverse_inertia = response[axis];
+  const double speed = body->getVelocityVector()[axis];
+  row.m_jacDiagABInv = inverse_inertia > SIMD_EPSILON ? 1.0 / inverse_inertia : 0.0;
+  row.m_friction = 0;
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+  // Bullet's motor: its target, then the velocity error (kp = 0, kd = 1)
+  const double desired = speed + (target_speed_ - speed);
+  row.m_rhs = (desired - speed) * row.m_jacDiagABInv;
+  row.m_rhsPenetration = 0;
+  row.m_cfm = 0;
+  row.m_lowerLimit = -bound;
+  row.m_upperLimit = bound;
+
+  // the joint torque or force the row applies, for Bullet's constraint-force bookkeeping
+  const btMultibodyLink& joint = body->getLink(link);
+  const btQuaternion& rotation = joint.m_cachedWorldTransform.getRotation();
+  const bool prismatic = joint.m_jointType == btMultibodyLink::ePrismatic;
+  row.m_contactNormal1 =
+      prismatic ? quatRotate(rotation, joint.m_axes[0].m_bottomVec) : btVector3(0, 0, 0);
+  row.m_contactNormal2 = -row.m_contactNormal1;
+  row.m_relpos1CrossNormal =
+      prismatic ? btVector3(0, 0, 0) : quatRotate(rotation, joint.m_axes[0].m_topVec);
+  row.m_relpos2CrossNormal = -row.m_relpos1CrossNormal;
+}
+
+// the joint damping of a body, solved implicitly (backward Euler) for all its jointed degrees of
+// freedom at once: after gravity and the joint torques, before the contacts, limits and motors,
+// the joint speeds become v' with M (v' - v) = -damping x step x v', so the damping only takes
+// energy out, however light a limb (an explicit torque -damping x v reverses a light limb's
+// speed each step once damping x step exceeds its inertia about the joint, and pumps energy).
+// With R the block of the inverse joint-space inertia over the damped coordinates (one response
+// of the body per coordinate), the impulses p solve (I / (damping x step) + R) p = -v.
+class ImplicitJointDamping {
+ public:
+  ImplicitJointDamping(btMultiBody& body, const std::vector<int>& links, double damping)
+      : body_(body), damping_(damping) {
+    for (int link : links)
+      axes_.push_back(6 + body.getLink(link).m_dofOffset);
+  }
+
+  void apply(double step) {
+    const int n = static_cast<int>(axes_.size());
+    const int dofs = body_.getNumDofs() + 6;
+    if (n == 0 || damping_ <= 0)
       return;
-    const int jacobian = respond(data);
-    if (damped)
-      addRow(rows, data, jacobian, 0.0, kUnbounded, 1.0 / (damping_ * info.m_timeStep));
-    if (driven)
-      addRow(rows, data, jacobian, target_speed_, getMaxAppliedImpulse(), 0.0);
+    responses_.assign(static_cast<std::size_t>(n) * dofs, 0.0);
+    unit_.assign(dofs, 0.0);
+    system_.assign(static_cast<std::size_t>(n) * n, 0.0);
+    impulse_.assign(n, 0.0);
+    for (int j = 0; j < n; ++j) {
+      unit_[axes_[j]] = 1;
+      body_.calcAccelerationDeltasMultiDof(unit_.data(), &responses_[j * dofs], scratch_r_,
+                                           scratch_v_);
+      unit_[axes_[j]] = 0;
+    }
+    // the system, symmetric positive definite; its Cholesky factor in place (lower triangle)
+    const double compliance = 1.0 / (damping_ * step);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j <= i; ++j)
+        system_[i * n + j] = 0.5 * (responses_[j * dofs + axes_[i]] +
+                                    responses_[i * dofs + axes_[j]]) +
+                             (i == j ? compliance : 0.0);
+    }
+    for (int j = 0; j < n; ++j) {
+      double diagonal = system_[j * n + j];
+      for (int k = 0; k < j; ++k)
+        diagonal -= system_[j * n + k] * system_[j * n + k];
+      if (!(diagonal > 0))
+        return;  // not positive definite (a degenerate body): leave the speeds alone
+      const double root = std::sqrt(diagonal);
+      system_[j * n + j] = root;
+      for (int i = j + 1; i < n; ++i) {
+        double value = system_[i * n + j];
+        for (int k = 0; k < j; ++k)
+          value -= system_[i * n + k] * system_[j * n + k];
+        system_[i * n + j] = value / root;
+      }
+    }
+    // p = -(L L^T)^-1 v, then v += sum_j p_j response_j
+    const double* speed = body_.getVelocityVector();
+    for (int i = 0; i < n; ++i) {
+      double value = -speed[axes_[i]];
+      for (int k = 0; k < i; ++k)
+        value -= system_[i * n + k] * impulse_[k];
+      impulse_[i] = value / system_[i * n + i];
+    }
+    for (int i = n - 1; i >= 0; --i) {
+      double value = impulse_[i];
+      for (int k = i + 1; k < n; ++k)
+        value -= system_[k * n + i] * impulse_[k];
+      impulse_[i] = value / system_[i * n + i];
+    }
+    change_.assign(dofs, 0.0);
+    for (int j = 0; j < n; ++j)
+      for (int d = 0; d < dofs; ++d)
+        change_[d] += impulse_[j] * responses_[j * dofs + d];
+    body_.applyDeltaVeeMultiDof(change_.data(), 1);
   }
 
  private:
-  static constexpr double kUnbounded = 1e30;
-
-  // the Jacobian (the joint coordinate) and the body's response to a unit impulse along it;
-  // returns their index in `data`
-  int respond(btMultiBodyJacobianData& data) {
-    btMultiBody* body = getMultiBodyA();
-    const int dofs = body->getNumDofs() + 6;
-    const int index = data.m_jacobians.size();
-    data.m_jacobians.resize(index + dofs);
-    data.m_deltaVelocitiesUnitImpulse.resize(index + dofs);
-    double* jacobian = &data.m_jacobians[index];
-    std::fill(jacobian, jacobian + dofs, 0.0);
-    jacobian[axisIndex()] = 1;
-    body->calcAccelerationDeltasMultiDof(jacobian, &data.m_deltaVelocitiesUnitImpulse[index],
-                                         data.scratch_r, data.scratch_v);
-    return index;
-  }
-
-  int axisIndex() { return 6 + getMultiBodyA()->getLink(getLinkA()).m_dofOffset; }
-
-  // a row towards `target_speed`, bounded to [-bound, bound], soft by `compliance` (speed per
-  // impulse)
-  void addRow(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data, int jacobian,
-              double target_speed, double bound, double compliance) {
-    btMultiBody* body = getMultiBodyA();
-    const int link = getLinkA();
-    const int axis = axisIndex();
-    btMultiBodySolverConstraint& row = rows.expandNonInitializing();
-    row.m_multiBodyA = body;
-    row.m_multiBodyB = nullptr;
-    row.m_linkA = link;
-    row.m_linkB = -1;
-    row.m_solverBodyIdA = -1;
-    row.m_solverBodyIdB = -1;
-    row.m_orgConstraint = this;
-    row.m_orgDofIndex = 0;
-    row.m_originalContactPoint = nullptr;
-    row.m_jacAindex = jacobian;
-
-    // the body's slot of velocity changes, shared by all its rows in this solve
-    row.m_deltaVelAindex = body->getCompanionId();
-    if (row.m_deltaVelAindex < 0) {
-      row.m_deltaVelAindex = data.m_deltaVelocities.size();
-      body->setCompanionId(row.m_deltaVelAindex);
-      data.m_deltaVelocities.resize(data.m_deltaVelocities.size() + body->getNumDofs() + 6);
-    }
-
-    // the joint's inverse inertia and speed; a row Bullet would disable stays inert
-    const double inverse_inertia = data.m_deltaVelocitiesUnitImpulse[jacobian + axis];
-    const double speed = body->getVelocityVector()[axis];
-    row.m_jacDiagABInv =
-        inverse_inertia > SIMD_EPSILON ? 1.0 / (inverse_inertia + compliance) : 0.0;
-    row.m_friction = 0;
-    row.m_appliedImpulse = 0;
-    row.m_appliedPushImpulse = 0;
-    // Bullet's motor: its target, then the velocity error (kp = 0, kd = 1)
-    const double desired = speed + (target_speed - speed);
-    row.m_rhs = (desired - speed) * row.m_jacDiagABInv;
-    row.m_rhsPenetration = 0;
-    row.m_cfm = compliance * row.m_jacDiagABInv;
-    row.m_lowerLimit = -bound;
-    row.m_upperLimit = bound;
-
-    // the joint torque or force the row applies, for Bullet's constraint-force bookkeeping
-    const btMultibodyLink& joint = body->getLink(link);
-    const btQuaternion& rotation = joint.m_cachedWorldTransform.getRotation();
-    const bool prismatic = joint.m_jointType == btMultibodyLink::ePrismatic;
-    row.m_contactNormal1 =
-        prismatic ? quatRotate(rotation, joint.m_axes[0].m_bottomVec) : btVector3(0, 0, 0);
-    row.m_contactNormal2 = -row.m_contactNormal1;
-    row.m_relpos1CrossNormal =
-        prismatic ? btVector3(0, 0, 0) : quatRotate(rotation, joint.m_axes[0].m_topVec);
-    row.m_relpos2CrossNormal = -row.m_relpos1CrossNormal;
-  }
-
+  btMultiBody& body_;
   double damping_;
-  double target_speed_ = 0;
+  std::vector<int> axes_;  // index of each damped coordinate in the body's velocity vector
+  std::vector<double> responses_, unit_, system_, impulse_, change_;
+  btAlignedObjectArray<double> scratch_r_;
+  btAlignedObjectArray<btVector3> scratch_v_;
+};
+
+// Bullet's multibody world with the implicit joint damping between the external forces and the
+// constraint solve (btMultiBodyDynamicsWorld::solveConstraints otherwise)
+class DampedWorld : public btMultiBodyDynamicsWorld {
+ public:
+  using btMultiBodyDynamicsWorld::btMultiBodyDynamicsWorld;
+  void setDamping(ImplicitJointDamping* damping) { damping_ = damping; }
+  void solveConstraints(btContactSolverInfo& info) override {
+    solveExternalForces(info);
+    if (damping_)
+      damping_->apply(info.m_timeStep);
+    buildIslands();
+    solveInternalConstraints(info);
+  }
+
+ private:
+  ImplicitJointDamping* damping_ = nullptr;
 };
 
 // the collision shape of a part or object (capsules and cylinders along their x axis)
@@ -244,15 +318,14 @@ struct FeatherstoneObjects {
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btMultiBodyConstraintSolver solver;
-  btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  DampedWorld world{&dispatcher, &broadphase, &solver, &configuration};
   btStaticPlaneShape ground_shape{btVector3(0, 0, 1), 0};
   btCollisionObject ground;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<PartCollider>> colliders;  // one per part, BodyPlan order
   std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
-  // one per jointed link with implicit damping, else one per motor-driven link
-  std::vector<std::unique_ptr<JointDrive>> drives;
-  std::vector<JointDrive*> motors;  // each effector's drive (null: no motor)
+  std::vector<std::unique_ptr<BudgetMotor>> motors;  // one per effector (or null)
+  std::unique_ptr<ImplicitJointDamping> damping;     // with physics.implicit_damping
   std::unique_ptr<btMultiBody> body;
   std::vector<std::unique_ptr<btCollisionShape>> object_shapes;
   std::vector<std::unique_ptr<btDefaultMotionState>> object_states;
@@ -263,8 +336,10 @@ struct FeatherstoneObjects {
   ~FeatherstoneObjects() {
     for (auto& object : objects)
       world.removeRigidBody(object.get());
-    for (auto& drive : drives)
-      world.removeMultiBodyConstraint(drive.get());
+    world.setDamping(nullptr);
+    for (auto& motor : motors)
+      if (motor)
+        world.removeMultiBodyConstraint(motor.get());
     for (auto& limit : limits)
       world.removeMultiBodyConstraint(limit.get());
     for (auto& collider : colliders)
@@ -461,26 +536,24 @@ void FeatherstoneWorld::build(double birth_height) {
     }
   }
 
-  // joint drives: with implicit damping one per jointed link (link order), else one per
-  // effector with a saturated motor (effector order, as Bullet's motors were added)
-  const bool implicit = physics_.implicit_damping && physics_.joint_damping > 0;
-  const bool motor_actuation = physics_.actuation == Actuation::saturated_motor;
-  std::vector<JointDrive*> link_drive(link_count, nullptr);
-  auto addDrive = [&](int link) {
-    b.drives.push_back(
-        std::make_unique<JointDrive>(&body, link, implicit ? physics_.joint_damping : 0.0));
-    b.world.addMultiBodyConstraint(b.drives.back().get());
-    link_drive[link] = b.drives.back().get();
-  };
-  if (implicit) {
-    for (int link : damped_links_)
-      addDrive(link);
+  // saturated motors: one per effector, idle (no impulse) until the controller drives it
+  if (physics_.actuation == Actuation::saturated_motor) {
+    for (const EffectorPlan& effector : plan_.effectors) {
+      int link = dof_link_[effector.part][effector.dof];
+      if (link < 0) {
+        b.motors.push_back(nullptr);
+        continue;
+      }
+      b.motors.push_back(std::make_unique<BudgetMotor>(&body, link));
+      b.world.addMultiBodyConstraint(b.motors.back().get());
+    }
   }
-  for (const EffectorPlan& effector : plan_.effectors) {
-    int link = dof_link_[effector.part][effector.dof];
-    if (motor_actuation && link >= 0 && !link_drive[link])
-      addDrive(link);
-    b.motors.push_back(motor_actuation && link >= 0 ? link_drive[link] : nullptr);
+
+  // the joint damping, solved implicitly before the constraints (else a torque, applyTorques)
+  if (physics_.implicit_damping && physics_.joint_damping > 0 && !damped_links_.empty()) {
+    b.damping =
+        std::make_unique<ImplicitJointDamping>(body, damped_links_, physics_.joint_damping);
+    b.world.setDamping(b.damping.get());
   }
 
   // collider transforms from the zero pose
@@ -588,13 +661,13 @@ void FeatherstoneWorld::applyTorques(std::span<const double> commands, double su
   // saturated motors: the command's sign picks the target speed, its size the torque budget
   if (physics_.actuation == Actuation::saturated_motor) {
     for (std::size_t e = 0; e < bullet_->motors.size(); ++e) {
-      JointDrive* motor = bullet_->motors[e];
+      BudgetMotor* motor = bullet_->motors[e].get();
       if (!motor)
         continue;
       double command = commands.empty() ? 0.0 : commands[e];
       int part = plan_.effectors[e].part;
-      motor->setMotor(command < 0 ? -physics_.motor_speed : physics_.motor_speed,
-                        std::abs(command) * max_torque_[part] * substep);
+      motor->setCommand(command < 0 ? -physics_.motor_speed : physics_.motor_speed,
+                      std::abs(command) * max_torque_[part] * substep);
     }
     return;
   }

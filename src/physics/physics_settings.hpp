@@ -25,10 +25,10 @@ struct PhysicsSettings {
   /// Bullet steps per time step (1: about half the cost, not converged; see
   /// docs/physics-and-tasks.md, "Converged, cheap defaults")
   int substeps = 2;
-  double gravity = 9.81;            ///< m / s^2, pointing down (-z)
-  double ground_friction = 1.0;     ///< Coulomb coefficient of the ground
-  double restitution = 0.0;         ///< of the ground and of parts whose material sets none
-  double joint_damping = 0.05;      ///< N m s / rad, passive damping on every joint
+  double gravity = 9.81;         ///< m / s^2, pointing down (-z)
+  double ground_friction = 1.0;  ///< Coulomb coefficient of the ground
+  double restitution = 0.0;      ///< of the ground and of parts whose material sets none
+  double joint_damping = 0.05;   ///< N m s / rad, passive damping on every joint
   /// The joint damping solved implicitly, with the contacts and limits (a soft constraint row
   /// per degree of freedom: impulse = -damping x step x the velocity after the step), so it can
   /// only take energy out. Off (what runs stored before this key used): an explicit torque of
