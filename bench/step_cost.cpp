@@ -17,9 +17,10 @@
 // bare loop alone (the usual yardstick: Bullet's 1 substep and 10 iterations). A setting added to
 // the Featherstone world later must be mirrored in BareLoop by hand to keep the matched loop equal
 // to cambrian's. One is not: the matched loop damps the joints as a Bullet program does, with an
-// explicit torque each substep; cambrian solves the damping implicitly (physics.implicit_damping,
-// a solver row per joint that Bullet has no class for), so with the default the cambrian loop
-// does that extra work, and physics.implicit_damping=false compares like with like.
+// explicit torque each substep; cambrian solves the damping implicitly (physics.implicit_damping:
+// one backward-Euler solve over the body's joint coordinates per substep, which Bullet has no
+// class for), so with the default the cambrian loop does that extra work, and
+// physics.implicit_damping=false compares like with like.
 #include "cambrian/body_plan.hpp"
 #include "cambrian/error.hpp"
 #include "cambrian/math.hpp"

@@ -185,9 +185,9 @@ class ImplicitJointDamping {
     const double compliance = 1.0 / (damping_ * step);
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j <= i; ++j)
-        system_[i * n + j] = 0.5 * (responses_[j * dofs + axes_[i]] +
-                                    responses_[i * dofs + axes_[j]]) +
-                             (i == j ? compliance : 0.0);
+        system_[i * n + j] =
+            0.5 * (responses_[j * dofs + axes_[i]] + responses_[i * dofs + axes_[j]]) +
+            (i == j ? compliance : 0.0);
     }
     for (int j = 0; j < n; ++j) {
       double diagonal = system_[j * n + j];
@@ -551,8 +551,7 @@ void FeatherstoneWorld::build(double birth_height) {
 
   // the joint damping, solved implicitly before the constraints (else a torque, applyTorques)
   if (physics_.implicit_damping && physics_.joint_damping > 0 && !damped_links_.empty()) {
-    b.damping =
-        std::make_unique<ImplicitJointDamping>(body, damped_links_, physics_.joint_damping);
+    b.damping = std::make_unique<ImplicitJointDamping>(body, damped_links_, physics_.joint_damping);
     b.world.setDamping(b.damping.get());
   }
 
@@ -667,7 +666,7 @@ void FeatherstoneWorld::applyTorques(std::span<const double> commands, double su
       double command = commands.empty() ? 0.0 : commands[e];
       int part = plan_.effectors[e].part;
       motor->setCommand(command < 0 ? -physics_.motor_speed : physics_.motor_speed,
-                      std::abs(command) * max_torque_[part] * substep);
+                        std::abs(command) * max_torque_[part] * substep);
     }
     return;
   }

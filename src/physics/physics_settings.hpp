@@ -29,10 +29,10 @@ struct PhysicsSettings {
   double ground_friction = 1.0;  ///< Coulomb coefficient of the ground
   double restitution = 0.0;      ///< of the ground and of parts whose material sets none
   double joint_damping = 0.05;   ///< N m s / rad, passive damping on every joint
-  /// The joint damping solved implicitly, with the contacts and limits (a soft constraint row
-  /// per degree of freedom: impulse = -damping x step x the velocity after the step), so it can
-  /// only take energy out. Off (what runs stored before this key used): an explicit torque of
-  /// -damping x the velocity before the step, which reverses a light limb's velocity each step
+  /// The joint damping solved implicitly (backward Euler over all the body's joint coordinates
+  /// at once, before the contacts and limits: impulse = -damping x step x the speed after it), so
+  /// it can only take energy out. Off (what runs stored before this key used): an explicit torque
+  /// of -damping x the velocity before the step, which reverses a light limb's velocity each step
   /// and makes a passive body creep (docs/physics-and-tasks.md, "No motion from nothing").
   bool implicit_damping = true;
   double strength_per_area = 2000;  ///< N m of torque per m^2 of the smaller cross-section
