@@ -320,11 +320,12 @@ std::vector<std::pair<std::string, std::string>> evolvedOn(
   return more;
 }
 // ... and under the physics of their day: before friction anchors, contact slop, the energy watch
-// and the solver tolerance
+// , the solver tolerance and implicit joint damping
 std::vector<std::pair<std::string, std::string>> earlierPhysics(
     std::vector<std::pair<std::string, std::string>> more = {}) {
   more.insert(more.end(), {{"physics.friction_anchors", "false"},
                            {"physics.contact_slop", "0"},
+                           {"physics.implicit_damping", "false"},
                            {"physics.max_energy_gain", "0"},
                            {"physics.solver_tolerance", "0"}});
   return evolvedOn(more);
