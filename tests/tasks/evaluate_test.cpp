@@ -319,8 +319,8 @@ std::vector<std::pair<std::string, std::string>> evolvedOn(
   more.insert(more.begin(), {"task.rest_check", "false"});
   return more;
 }
-// ... and under the physics of their day: before friction anchors, contact slop, the energy watch
-// , the solver tolerance and implicit joint damping
+// ... and under the physics of their day: before friction anchors, contact slop, implicit joint
+// damping, the energy watch and the solver tolerance
 std::vector<std::pair<std::string, std::string>> earlierPhysics(
     std::vector<std::pair<std::string, std::string>> more = {}) {
   more.insert(more.end(), {{"physics.friction_anchors", "false"},
