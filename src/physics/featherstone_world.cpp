@@ -166,11 +166,11 @@ class ImplicitJointDamping {
       axes_.push_back(6 + body.getLink(link).m_dofOffset);
   }
 
+  // (built only for a body with jointed links and damping > 0; the vectors keep their capacity,
+  // so after the first step nothing is allocated)
   void apply(double step) {
     const int n = static_cast<int>(axes_.size());
     const int dofs = body_.getNumDofs() + 6;
-    if (n == 0 || damping_ <= 0)
-      return;
     responses_.assign(static_cast<std::size_t>(n) * dofs, 0.0);
     unit_.assign(dofs, 0.0);
     system_.assign(static_cast<std::size_t>(n) * n, 0.0);

@@ -28,9 +28,9 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
       .require([&p] { return p.joint_damping >= 0 && std::isfinite(p.joint_damping); },
                "must be >= 0");
   s.add("physics.implicit_damping", p.implicit_damping,
-        "joint damping solved implicitly with the contacts (it can only remove energy); false: "
-        "an explicit torque from the velocity before the step, which light limbs turn into "
-        "jitter and creep")
+        "joint damping solved implicitly, before the contacts (it can only remove energy); "
+        "false: an explicit torque from the velocity before the step, which light limbs turn "
+        "into jitter and creep")
       .earlierRunsUsed("false");
   s.add("physics.strength_per_area", p.strength_per_area,
         "joint torque per m^2 of the smaller cross-section, N m/m^2")
