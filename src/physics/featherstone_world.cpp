@@ -61,17 +61,102 @@ class PartCollider : public btMultiBodyLinkCollider {
   const bool* self_contacts_;
 };
 
+// the body's velocity response to a unit impulse along each joint coordinate, made at most once
+// per Bullet step and shared by the damping, the motors and the limits: it depends only on the
+// articulated inertia, which the forward dynamics (solveExternalForces) makes before the solve
+// and nothing changes until the next step. The same call on the same inputs: the same bits.
+class JointResponses {
+ public:
+  explicit JointResponses(btMultiBody& body) : body_(body) {}
+  // forget them: the forward dynamics has moved the body (each Bullet step)
+  void clear() { std::fill(made_.begin(), made_.end(), 0); }
+  // the response to a unit impulse along velocity coordinate `axis` (6 + the dof offset)
+  const double* along(int axis) {
+    const int dofs = body_.getNumDofs() + 6;
+    if (made_.size() != static_cast<std::size_t>(dofs)) {
+      made_.assign(dofs, 0);
+      responses_.assign(static_cast<std::size_t>(dofs) * dofs, 0.0);
+      unit_.assign(dofs, 0.0);
+    }
+    double* response = &responses_[static_cast<std::size_t>(axis) * dofs];
+    if (!made_[axis]) {
+      unit_[axis] = 1;
+      body_.calcAccelerationDeltasMultiDof(unit_.data(), response, scratch_r_, scratch_v_);
+      unit_[axis] = 0;
+      made_[axis] = 1;
+    }
+    return response;
+  }
+
+ private:
+  btMultiBody& body_;
+  std::vector<char> made_;  // per coordinate: its response is made this step
+  std::vector<double> responses_, unit_;
+  btAlignedObjectArray<double> scratch_r_;
+  btAlignedObjectArray<btVector3> scratch_v_;
+};
+
+// a solver row of one joint coordinate, filled on the body's side only (Bullet's joint
+// constraints fill the same body a second time as the other side, with a zero Jacobian: that
+// changes no number and costs a solve of the whole body): the Jacobian `direction` (+1 or -1)
+// along `axis`, the response the shared one times the direction (negation is exact), the
+// inverse inertia, and the joint's speed along the row. Returns the speed (Bullet's rel_vel).
+double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& data,
+                    btMultiBodyConstraint* constraint, int dof_index, btMultiBody* body, int link,
+                    double direction, JointResponses& responses) {
+  const int dofs = body->getNumDofs() + 6;
+  const int axis = 6 + body->getLink(link).m_dofOffset;
+  row.m_multiBodyA = body;
+  row.m_multiBodyB = nullptr;
+  row.m_linkA = link;
+  row.m_linkB = -1;
+  row.m_solverBodyIdA = -1;
+  row.m_solverBodyIdB = -1;
+  row.m_orgConstraint = constraint;
+  row.m_orgDofIndex = dof_index;
+  row.m_originalContactPoint = nullptr;
+
+  // the body's slot of velocity changes, shared by all its rows in this solve
+  row.m_deltaVelAindex = body->getCompanionId();
+  if (row.m_deltaVelAindex < 0) {
+    row.m_deltaVelAindex = data.m_deltaVelocities.size();
+    body->setCompanionId(row.m_deltaVelAindex);
+    data.m_deltaVelocities.resize(data.m_deltaVelocities.size() + dofs);
+  }
+
+  // Jacobian and response
+  row.m_jacAindex = data.m_jacobians.size();
+  data.m_jacobians.resize(row.m_jacAindex + dofs);
+  data.m_deltaVelocitiesUnitImpulse.resize(row.m_jacAindex + dofs);
+  double* jacobian = &data.m_jacobians[row.m_jacAindex];
+  std::fill(jacobian, jacobian + dofs, 0.0);
+  jacobian[axis] = direction;
+  const double* unit = responses.along(axis);
+  double* response = &data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
+  for (int d = 0; d < dofs; ++d)
+    response[d] = direction > 0 ? unit[d] : -unit[d];
+
+  // a row Bullet would disable stays inert
+  const double inverse_inertia = unit[axis];
+  row.m_jacDiagABInv = inverse_inertia > SIMD_EPSILON ? 1.0 / inverse_inertia : 0.0;
+  row.m_friction = 0;
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+  row.m_cfm = 0;
+  const double speed = body->getVelocityVector()[axis];
+  return direction > 0 ? speed : -speed;
+}
+
 // a saturated motor on one joint degree of freedom: a solver row towards the target speed,
 // bounded by the torque budget, none while the budget is zero (a row bounded to [0, 0] changes
-// no velocity, and setting it up costs a solve of the whole body). Bullet's joint motor fills
-// its row for the body twice, as both sides of the joint: the second side's Jacobian is zero, so
-// it changes no number and costs a solve of the whole body per row and a pass over its
-// velocities per iteration. This row is filled once, with Bullet's arithmetic
-// (btMultiBodyJointMotor and btMultiBodyConstraint::fillMultiBodyConstraint): the same bits.
+// no velocity, and setting it up costs a solve of the whole body). Filled on the body's side
+// only, with Bullet's arithmetic (btMultiBodyJointMotor and
+// btMultiBodyConstraint::fillMultiBodyConstraint): the same bits as Bullet's motor.
 class BudgetMotor : public btMultiBodyJointMotor {
  public:
   // (finalized here: the solver writes each row's impulse back into the motor's storage)
-  BudgetMotor(btMultiBody* body, int link) : btMultiBodyJointMotor(body, link, 0.0, 0.0) {
+  BudgetMotor(btMultiBody* body, int link, JointResponses& responses)
+      : btMultiBodyJointMotor(body, link, 0.0, 0.0), responses_(responses) {
     btMultiBodyJointMotor::finalizeMultiDof();
   }
   // the target speed and torque budget for the next Bullet step
@@ -83,6 +168,7 @@ class BudgetMotor : public btMultiBodyJointMotor {
                             const btContactSolverInfo& info) override;
 
  private:
+  JointResponses& responses_;
   double target_speed_ = 0;
 };
 
@@ -93,49 +179,12 @@ void BudgetMotor::createConstraintRows(btMultiBodyConstraintArray& rows,
     return;
   btMultiBody* body = getMultiBodyA();
   const int link = getLinkA();
-  const int dofs = body->getNumDofs() + 6;
-  const int axis = 6 + body->getLink(link).m_dofOffset;
   btMultiBodySolverConstraint& row = rows.expandNonInitializing();
-  row.m_multiBodyA = body;
-  row.m_multiBodyB = nullptr;
-  row.m_linkA = link;
-  row.m_linkB = -1;
-  row.m_solverBodyIdA = -1;
-  row.m_solverBodyIdB = -1;
-  row.m_orgConstraint = this;
-  row.m_orgDofIndex = 0;
-  row.m_originalContactPoint = nullptr;
-
-  // the body's slot of velocity changes, shared by all its rows in this solve
-  row.m_deltaVelAindex = body->getCompanionId();
-  if (row.m_deltaVelAindex < 0) {
-    row.m_deltaVelAindex = data.m_deltaVelocities.size();
-    body->setCompanionId(row.m_deltaVelAindex);
-    data.m_deltaVelocities.resize(data.m_deltaVelocities.size() + dofs);
-  }
-
-  // Jacobian: the joint coordinate; the body's response to a unit impulse along it
-  row.m_jacAindex = data.m_jacobians.size();
-  data.m_jacobians.resize(row.m_jacAindex + dofs);
-  data.m_deltaVelocitiesUnitImpulse.resize(row.m_jacAindex + dofs);
-  double* jacobian = &data.m_jacobians[row.m_jacAindex];
-  std::fill(jacobian, jacobian + dofs, 0.0);
-  jacobian[axis] = 1;
-  double* response = &data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
-  body->calcAccelerationDeltasMultiDof(jacobian, response, data.scratch_r, data.scratch_v);
-
-  // the joint's inverse inertia and speed; a row Bullet would disable stays inert
-  const double inverse_inertia = response[axis];
-  const double speed = body->getVelocityVector()[axis];
-  row.m_jacDiagABInv = inverse_inertia > SIMD_EPSILON ? 1.0 / inverse_inertia : 0.0;
-  row.m_friction = 0;
-  row.m_appliedImpulse = 0;
-  row.m_appliedPushImpulse = 0;
+  const double speed = fillJointRow(row, data, this, 0, body, link, 1.0, responses_);
   // Bullet's motor: its target, then the velocity error (kp = 0, kd = 1)
   const double desired = speed + (target_speed_ - speed);
   row.m_rhs = (desired - speed) * row.m_jacDiagABInv;
   row.m_rhsPenetration = 0;
-  row.m_cfm = 0;
   row.m_lowerLimit = -bound;
   row.m_upperLimit = bound;
 
@@ -151,6 +200,76 @@ void BudgetMotor::createConstraintRows(btMultiBodyConstraintArray& rows,
   row.m_relpos2CrossNormal = -row.m_relpos1CrossNormal;
 }
 
+// the lower and upper limit of one joint coordinate: a row for each bound the joint is at or
+// past, filled on the body's side only, with Bullet's arithmetic
+// (btMultiBodyJointLimitConstraint::createConstraintRows): the same bits as Bullet's limit
+class JointLimit : public btMultiBodyJointLimitConstraint {
+ public:
+  JointLimit(btMultiBody* body, int link, double lower, double upper, JointResponses& responses)
+      : btMultiBodyJointLimitConstraint(body, link, lower, upper), responses_(responses) {
+    // (the storage of the bounds' positions and impulses)
+    btMultiBodyJointLimitConstraint::finalizeMultiDof();
+  }
+  void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
+                            const btContactSolverInfo& info) override;
+
+ private:
+  JointResponses& responses_;
+};
+
+void JointLimit::createConstraintRows(btMultiBodyConstraintArray& rows,
+                                      btMultiBodyJacobianData& data,
+                                      const btContactSolverInfo& info) {
+  btMultiBody* body = m_bodyA;
+  const int link = m_linkA;
+  const btMultibodyLink& joint = body->getLink(link);
+  setPosition(0, body->getJointPos(link) - m_lowerBound);
+  setPosition(1, m_upperBound - body->getJointPos(link));
+  for (int bound = 0; bound < 2; ++bound) {
+    const double penetration = getPosition(bound);
+    if (penetration > 0)
+      continue;
+    const double direction = bound ? -1 : 1;
+    btMultiBodySolverConstraint& row = rows.expandNonInitializing();
+    const double speed = fillJointRow(row, data, this, bound, body, link, direction, responses_);
+    row.m_lowerLimit = 0;
+    row.m_upperLimit = m_maxAppliedImpulse;
+
+    const btVector3 axis = direction * quatRotate(joint.m_cachedWorldTransform.getRotation(),
+                                                  joint.m_jointType == btMultibodyLink::ePrismatic
+                                                      ? joint.m_axes[0].m_bottomVec
+                                                      : joint.m_axes[0].m_topVec);
+    if (joint.m_jointType == btMultibodyLink::ePrismatic) {
+      row.m_contactNormal1 = axis;
+      row.m_contactNormal2 = -axis;
+      row.m_relpos1CrossNormal.setZero();
+      row.m_relpos2CrossNormal.setZero();
+    } else {
+      row.m_contactNormal1.setZero();
+      row.m_contactNormal2.setZero();
+      row.m_relpos1CrossNormal = axis;
+      row.m_relpos2CrossNormal = -axis;
+    }
+
+    // Bullet's limit: the velocity error, and the position error with erp (erp2 only when
+    // split impulse is on and the bound is passed by more than its threshold)
+    const bool combined =
+        !info.m_splitImpulse || penetration > info.m_splitImpulsePenetrationThreshold;
+    const double erp = combined ? info.m_erp : info.m_erp2;
+    const double positional_error = -penetration * erp / info.m_timeStep;
+    const double velocity_error = -speed;
+    const double penetration_impulse = positional_error * row.m_jacDiagABInv;
+    const double velocity_impulse = velocity_error * row.m_jacDiagABInv;
+    if (combined) {
+      row.m_rhs = penetration_impulse + velocity_impulse;
+      row.m_rhsPenetration = 0;
+    } else {
+      row.m_rhs = velocity_impulse;
+      row.m_rhsPenetration = penetration_impulse;
+    }
+  }
+}
+
 // the joint damping of a body, solved implicitly (backward Euler) for all its jointed degrees of
 // freedom at once: after gravity and the joint torques, before the contacts, limits and motors,
 // the joint speeds become v' with M (v' - v) = -damping x step x v', so the damping only takes
@@ -160,8 +279,9 @@ void BudgetMotor::createConstraintRows(btMultiBodyConstraintArray& rows,
 // of the body per coordinate), the impulses p solve (I / (damping x step) + R) p = -v.
 class ImplicitJointDamping {
  public:
-  ImplicitJointDamping(btMultiBody& body, const std::vector<int>& links, double damping)
-      : body_(body), damping_(damping) {
+  ImplicitJointDamping(btMultiBody& body, const std::vector<int>& links, double damping,
+                       JointResponses& responses)
+      : body_(body), damping_(damping), responses_(responses) {
     for (int link : links)
       axes_.push_back(6 + body.getLink(link).m_dofOffset);
   }
@@ -171,23 +291,17 @@ class ImplicitJointDamping {
   void apply(double step) {
     const int n = static_cast<int>(axes_.size());
     const int dofs = body_.getNumDofs() + 6;
-    responses_.assign(static_cast<std::size_t>(n) * dofs, 0.0);
-    unit_.assign(dofs, 0.0);
     system_.assign(static_cast<std::size_t>(n) * n, 0.0);
     impulse_.assign(n, 0.0);
-    for (int j = 0; j < n; ++j) {
-      unit_[axes_[j]] = 1;
-      body_.calcAccelerationDeltasMultiDof(unit_.data(), &responses_[j * dofs], scratch_r_,
-                                           scratch_v_);
-      unit_[axes_[j]] = 0;
-    }
+    response_.resize(n);
+    for (int j = 0; j < n; ++j)
+      response_[j] = responses_.along(axes_[j]);
     // the system, symmetric positive definite; its Cholesky factor in place (lower triangle)
     const double compliance = 1.0 / (damping_ * step);
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j <= i; ++j)
         system_[i * n + j] =
-            0.5 * (responses_[j * dofs + axes_[i]] + responses_[i * dofs + axes_[j]]) +
-            (i == j ? compliance : 0.0);
+            0.5 * (response_[j][axes_[i]] + response_[i][axes_[j]]) + (i == j ? compliance : 0.0);
     }
     for (int j = 0; j < n; ++j) {
       double diagonal = system_[j * n + j];
@@ -221,27 +335,31 @@ class ImplicitJointDamping {
     change_.assign(dofs, 0.0);
     for (int j = 0; j < n; ++j)
       for (int d = 0; d < dofs; ++d)
-        change_[d] += impulse_[j] * responses_[j * dofs + d];
+        change_[d] += impulse_[j] * response_[j][d];
     body_.applyDeltaVeeMultiDof(change_.data(), 1);
   }
 
  private:
   btMultiBody& body_;
   double damping_;
+  JointResponses& responses_;
   std::vector<int> axes_;  // index of each damped coordinate in the body's velocity vector
-  std::vector<double> responses_, unit_, system_, impulse_, change_;
-  btAlignedObjectArray<double> scratch_r_;
-  btAlignedObjectArray<btVector3> scratch_v_;
+  std::vector<const double*> response_;  // this step's response along each of them
+  std::vector<double> system_, impulse_, change_;
 };
 
 // Bullet's multibody world with the implicit joint damping between the external forces and the
-// constraint solve (btMultiBodyDynamicsWorld::solveConstraints otherwise)
+// constraint solve, and the joint responses made afresh after the forward dynamics
+// (btMultiBodyDynamicsWorld::solveConstraints otherwise)
 class DampedWorld : public btMultiBodyDynamicsWorld {
  public:
   using btMultiBodyDynamicsWorld::btMultiBodyDynamicsWorld;
   void setDamping(ImplicitJointDamping* damping) { damping_ = damping; }
+  void setResponses(JointResponses* responses) { responses_ = responses; }
   void solveConstraints(btContactSolverInfo& info) override {
     solveExternalForces(info);
+    if (responses_)
+      responses_->clear();
     if (damping_)
       damping_->apply(info.m_timeStep);
     buildIslands();
@@ -250,6 +368,7 @@ class DampedWorld : public btMultiBodyDynamicsWorld {
 
  private:
   ImplicitJointDamping* damping_ = nullptr;
+  JointResponses* responses_ = nullptr;
 };
 
 // the collision shape of a part or object (capsules and cylinders along their x axis)
@@ -323,7 +442,8 @@ struct FeatherstoneObjects {
   btCollisionObject ground;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<PartCollider>> colliders;  // one per part, BodyPlan order
-  std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
+  std::unique_ptr<JointResponses> responses;             // shared by damping, limits and motors
+  std::vector<std::unique_ptr<JointLimit>> limits;
   std::vector<std::unique_ptr<BudgetMotor>> motors;  // one per effector (or null)
   std::unique_ptr<ImplicitJointDamping> damping;     // with physics.implicit_damping
   std::unique_ptr<btMultiBody> body;
@@ -337,6 +457,7 @@ struct FeatherstoneObjects {
     for (auto& object : objects)
       world.removeRigidBody(object.get());
     world.setDamping(nullptr);
+    world.setResponses(nullptr);
     for (auto& motor : motors)
       if (motor)
         world.removeMultiBodyConstraint(motor.get());
@@ -501,6 +622,8 @@ void FeatherstoneWorld::build(double birth_height) {
   }
   body.finalizeMultiDof();
   b.world.addMultiBody(&body);
+  b.responses = std::make_unique<JointResponses>(body);
+  b.world.setResponses(b.responses.get());
 
   // colliders: one shape per part, with the part's material
   for (int i = 0; i < part_count; ++i) {
@@ -530,8 +653,7 @@ void FeatherstoneWorld::build(double birth_height) {
       if (link < 0)
         continue;
       double limit = plan_.parts[i].joint_limit[d];
-      b.limits.push_back(
-          std::make_unique<btMultiBodyJointLimitConstraint>(&body, link, -limit, limit));
+      b.limits.push_back(std::make_unique<JointLimit>(&body, link, -limit, limit, *b.responses));
       b.world.addMultiBodyConstraint(b.limits.back().get());
     }
   }
@@ -544,14 +666,15 @@ void FeatherstoneWorld::build(double birth_height) {
         b.motors.push_back(nullptr);
         continue;
       }
-      b.motors.push_back(std::make_unique<BudgetMotor>(&body, link));
+      b.motors.push_back(std::make_unique<BudgetMotor>(&body, link, *b.responses));
       b.world.addMultiBodyConstraint(b.motors.back().get());
     }
   }
 
   // the joint damping, solved implicitly before the constraints (else a torque, applyTorques)
   if (physics_.implicit_damping && physics_.joint_damping > 0 && !damped_links_.empty()) {
-    b.damping = std::make_unique<ImplicitJointDamping>(body, damped_links_, physics_.joint_damping);
+    b.damping = std::make_unique<ImplicitJointDamping>(body, damped_links_, physics_.joint_damping,
+                                                       *b.responses);
     b.world.setDamping(b.damping.get());
   }
 
