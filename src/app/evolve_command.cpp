@@ -126,6 +126,7 @@ void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
   s.run.earlier_config_text = schema.earlierRunsIniText();
   s.run.run_only = schema.runOnlyKeys();
   s.run.measures = s.worker.creature.task().measures();
+  s.run.repeatable = s.worker.creature.task().repeatable();
 
   // seed genomes (rank 0 only), checked against the encoding's limits
   if (read_seeds) {

@@ -8,6 +8,7 @@
 #include "core/cpu_time.hpp"
 #include "core/test_kill.hpp"
 #include "evolution/breeder.hpp"
+#include "evolution/outcome_reuse.hpp"
 #include "evolution/statistics.hpp"
 #include "physics/physics_settings.hpp"
 #include "run/resume.hpp"
@@ -309,8 +310,12 @@ class EvolutionRun {
 
     Population population =
         last_ ? breeder_.nextGeneration(*last_) : breeder_.initialPopulation(seeds_);
+    OutcomeReuse reuse;
+    if (run_.reuse_outcomes && run_.repeatable)
+      reuse = reuseKnownOutcomes(population, last_ ? &*last_ : nullptr);
     EvaluationSpan span =
         evaluator_.evaluate(population, settings_.seed, [&] { finishPending(false); });
+    copySiblingOutcomes(population, reuse);
 
     // summarise in id order (the times so far; closed when the next generation starts)
     GenerationRecord record;
@@ -331,11 +336,11 @@ class EvolutionRun {
     result_.generations.push_back(record);
     walls_.push_back(record.wall_seconds);
     pending_ = Pending{result_.generations.size() - 1, breeder_.nextId()};
-    progress(g, record);
+    progress(g, record, reuse.from_parents + reuse.siblings.size());
   }
 
-  // the progress line and, verbose, its details
-  void progress(std::uint64_t g, const GenerationRecord& record) const {
+  // the progress line and, verbose, its details (`reused`: copies that took an outcome)
+  void progress(std::uint64_t g, const GenerationRecord& record, std::size_t reused) const {
     double elapsed = secondsSince(run_start_);
     double eta =
         elapsed / static_cast<double>(g + 1 - start_) * static_cast<double>(total_ - g - 1);
@@ -343,13 +348,14 @@ class EvolutionRun {
       out_ << progressLine(record, settings_.generations, eta) << std::endl;
     if (run_.verbose) {
       char detail[256];
-      std::snprintf(
-          detail, sizeof detail,
-          "    evaluated %llu  span %.3f s  busy %.3f s  idle %.3f s  rank0 serial %.4f s  "
-          "failed %zu  best id %llu",
-          static_cast<unsigned long long>(record.evaluations), record.evaluation_span_seconds,
-          record.worker_busy_seconds, record.worker_idle_seconds, record.rank0_serial_seconds,
-          record.stats.failed, static_cast<unsigned long long>(record.stats.best_id));
+      std::snprintf(detail, sizeof detail,
+                    "    evaluated %llu  reused %zu  span %.3f s  busy %.3f s  idle %.3f s  rank0 "
+                    "serial %.4f s  "
+                    "failed %zu  best id %llu",
+                    static_cast<unsigned long long>(record.evaluations), reused,
+                    record.evaluation_span_seconds, record.worker_busy_seconds,
+                    record.worker_idle_seconds, record.rank0_serial_seconds, record.stats.failed,
+                    static_cast<unsigned long long>(record.stats.best_id));
       out_ << detail << std::endl;
     }
   }

@@ -33,6 +33,11 @@ void RunSettings::declareSettings(SettingsSchema& s) {
         "starts that the measured times say would not end in time (0 = no limit)")
       .require([&r] { return r.max_hours >= 0 && std::isfinite(r.max_hours); }, "must be >= 0")
       .runOnly();
+  s.add("run.reuse_outcomes", r.reuse_outcomes,
+        "a child whose genome is byte for byte a parent's or an earlier sibling's takes that "
+        "outcome instead of being simulated again, for tasks whose outcome depends on nothing "
+        "else (every task with bodies); the results are the same bits either way")
+      .runOnly();
   s.add("run.test_kill_at", r.test_kill_at,
         "testing: rank 0 SIGKILLs itself at POINT:GENERATION, POINT one of evaluation, history, "
         "checkpoint_write, checkpoint_rename, checkpoint_done")

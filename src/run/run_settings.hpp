@@ -23,9 +23,11 @@ struct RunSettings {
   double checkpoint_minutes = 1;  ///< ... or when this many minutes passed since the last (0: off)
   double max_hours = 0;           ///< stop cleanly before this wall time (0: no limit)
   std::string test_kill_at;       ///< testing: "POINT:GENERATION" where rank 0 SIGKILLs itself
+  bool reuse_outcomes = true;     ///< copies of an evaluated genome take its outcome
 
   // handed over by the command (not settings)
   ViabilityCheck viable;    ///< birth test for new individuals (none: accept all), rank 0 only
+  bool repeatable = false;  ///< the task's outcome is a function of genome and settings only
   bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
   bool fresh = false;       ///< ignore and remove an existing checkpoint, start over
   std::string config_text;  ///< the effective settings as INI text, stored in the history

@@ -33,6 +33,11 @@ class Task {
 
   /// False for a task that evaluates genomes without bodies (synthetic).
   virtual bool needsBody() const { return true; }
+  /// True when an outcome is a pure function of the genome and the settings, so that the same
+  /// genome always gives the same bits and a copy may take its original's outcome
+  /// (run.reuse_outcomes): every task with bodies (an episode draws no random numbers); false
+  /// for a task that uses the evaluation seed.
+  virtual bool repeatable() const { return needsBody(); }
   /// Adds what the task needs to the environment (a projectile, a target) before birth.
   virtual void prepare(Environment&) const {}
   /// Runs the task's phases on a born creature and sets the outcome's measures and fitness

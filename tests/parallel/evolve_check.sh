@@ -19,6 +19,9 @@
 #                   digest and individuals table of largest_first, also when a resume changes
 #                   the order; at 2 ranks the single worker evaluates generation 0 in a
 #                   different order under each (the setting reaches the scheduler)
+#   reuse_outcomes: a walk run from eight copies of one seed genome gives the same digest and
+#                   individuals table with run.reuse_outcomes on and off; on, generation 0
+#                   simulates the genome once (seven copies take its outcome, on rank -1)
 #   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
 #                   the run's wall time (a busy-polling rank 0 would use all of it)
 # Every job runs under `timeout`: a job still running after $limit s is a failure (a rank that
@@ -255,6 +258,29 @@ case $mode in
     job resumed "$np" --config "$work/run.ini" --out "$work/resumed"
     expect_rc resumed 0
     expect_same_run straight resumed
+    ;;
+
+  reuse_outcomes)
+    walker="$(cd "$(dirname "$0")/../.." && pwd)/jobs/creatures/walker4.genome"
+    seeds=()
+    for _ in 1 2 3 4 5 6 7 8; do seeds+=(--evolution.seed_genomes "$walker"); done
+    walk=(--task.name walk --task.evaluation_time 1 --evolution.selection truncation
+      "${seeds[@]}")
+    job reused "$np" --config "$work/run.ini" --out "$work/reused" "${walk[@]}"
+    expect_rc reused 0
+    job simulated "$np" --config "$work/run.ini" --out "$work/simulated" "${walk[@]}" \
+      --run.reuse_outcomes false
+    expect_rc simulated 0
+    expect_same_run simulated reused
+    # generation 0: 16 individuals, 8 of them the seed; column 10 is `evaluations`
+    evaluations() { awk -F'\t' 'NR == 2 { print $10 }' "$work/$1/generations.tsv"; }
+    [ "$(evaluations simulated)" = 16 ] ||
+      fail "simulated: $(evaluations simulated) evaluations in generation 0, expected 16"
+    [ "$(evaluations reused)" = 9 ] ||
+      fail "reused: $(evaluations reused) evaluations in generation 0, expected 9 (16 - 7 copies)"
+    copies=$(awk -F'\t' '$1 == 0 && $9 == -1' "$work/reused/individuals.tsv" | wc -l)
+    [ "$copies" -eq 7 ] || fail "reused: $copies copies on rank -1 in generation 0, expected 7"
+    echo "$(digest_of reused); generation 0 evaluated $(evaluations reused) of 16"
     ;;
 
   dispatch_order)

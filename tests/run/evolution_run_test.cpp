@@ -84,6 +84,59 @@ TEST(EvolutionRun, RecordsEveryIndividualAndGenerationAndWritesTables) {
             (std::vector<std::string>{"evolution.generations", "run.out"}));
 }
 
+// a synthetic run from ten copies of one seed genome (population 10, 3 generations)
+RunResult runFromCopies(const std::string& dir, bool repeatable, bool reuse) {
+  EvolutionSettings settings;
+  settings.population = 10;
+  settings.generations = 3;
+  settings.seed = 4;
+  WorkerSettings worker;
+  worker.creature.set("task.name", "synthetic");
+  worker.creature.set("task.synthetic_cost_us", "20");
+  const Encoding& encoding = worker.creature.encoding();
+  std::vector<Genotype> seeds(10, encoding.random(9, 0, 0));
+  InProcessEvaluator evaluator(worker);
+  RunSettings run;
+  run.out_dir = dir;
+  run.fresh = true;
+  run.quiet = true;
+  run.measures = worker.creature.task().measures();
+  run.repeatable = repeatable;
+  run.reuse_outcomes = reuse;
+  run.config_text = "[evolution]\ngenerations = 3\npopulation = 10\n";
+  std::ostringstream out;
+  return runEvolution(settings, encoding, seeds, evaluator, run, out);
+}
+
+std::size_t totalEvaluations(const RunResult& result) {
+  std::size_t total = 0;
+  for (const GenerationRecord& record : result.generations)
+    total += record.evaluations;
+  return total;
+}
+
+TEST(EvolutionRun, CopiesOfAnEvaluatedGenomeTakeItsOutcomeWithTheSameResults) {
+  // without noise the synthetic task's outcome is a function of the genome, as a body task's
+  std::string dir = testing::TempDir() + "/cambrian_evolution_run_reuse";
+  RunResult reused = runFromCopies(dir + "/reused", true, true);
+  RunResult evaluated = runFromCopies(dir + "/evaluated", true, false);
+  EXPECT_EQ(reused.digest, evaluated.digest);
+  EXPECT_EQ(recordKeys(reused), recordKeys(evaluated));
+  // ten equal seeds: one simulated, nine copies that took its outcome, on no rank
+  EXPECT_EQ(evaluated.generations[0].evaluations, 10u);
+  EXPECT_EQ(reused.generations[0].evaluations, 1u);
+  int copies = 0;
+  for (const Individual& individual : reused.individuals)
+    if (individual.generation == 0 && individual.worker_rank == -1)
+      ++copies;
+  EXPECT_EQ(copies, 9);
+  EXPECT_LT(totalEvaluations(reused), totalEvaluations(evaluated));
+  // a task that is not repeatable (a noisy one) evaluates every copy
+  RunResult noisy = runFromCopies(dir + "/noisy", false, true);
+  EXPECT_EQ(totalEvaluations(noisy), totalEvaluations(evaluated));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(EvolutionRun, SameSettingsSameDigest) {
   std::ostringstream out;
   std::string dir = testing::TempDir() + "/cambrian_evolution_run_test2";
