@@ -71,6 +71,12 @@ for rate in (300, 360):
     VARIANTS[f"{rate}Hz x1, 20 it, tol 1e-4"] = {
         "physics.time_step": repr(1 / rate), "physics.substeps": "1",
         "physics.solver_iterations": "20", "physics.solver_tolerance": "0.0001"}
+# the fine solution at the default's controller rate: the controller (the creature's brain, whose
+# signals take one time step per neuron) runs at 240 Hz as in every 1/240 s variant, and only the
+# physics is refined (5 Bullet steps of 1/1200 s per time step, 100 iterations)
+VARIANTS["reference, 240 Hz controller"] = {
+    "physics.time_step": "0.004166666666666667", "physics.substeps": "5",
+    "physics.solver_iterations": "100"}
 # the joint damping model of before physics.implicit_damping, at the default steps
 VARIANTS["default, explicit damping"] = {"physics.implicit_damping": "false",
                                           "physics.solver_tolerance": "0.0001"}
@@ -221,8 +227,9 @@ def agrees(values, reference_values, tolerance=TOLERANCE, floor=FLOOR):
                                   2 * standard_error))
 
 
-def summarise(rows, out_dir, load_paths=True):
-    """Per variant: the aggregate figures (dicts), and per creature the reference figures."""
+def summarise(rows, out_dir, load_paths=True, reference_name="reference"):
+    """Per variant: the aggregate figures (dicts) against the variant `reference_name`, and per
+    creature the reference figures."""
     by = {}
     for row in rows:
         fitness = float(row["fitness"]) if row["status"] == "ok" else 0.0
@@ -230,7 +237,7 @@ def summarise(rows, out_dir, load_paths=True):
     creatures = sorted({c for c, _ in by})
     reference = {}
     for creature in creatures:
-        runs = by.get((creature, "reference"), [])
+        runs = by.get((creature, reference_name), [])
         if runs:
             values = np.array([f for _, _, f in runs])
             reference[creature] = {"mean": float(values.mean()), "spread": float(values.std()),
@@ -245,7 +252,7 @@ def summarise(rows, out_dir, load_paths=True):
         for creature in creatures:
             runs = by.get((creature, variant))
             torque = variant.startswith("torque:")
-            ref_runs = torque_reference[creature] if torque else by.get((creature, "reference"))
+            ref_runs = torque_reference[creature] if torque else by.get((creature, reference_name))
             if not runs or not ref_runs:
                 continue
             values = np.array([f for _, _, f in runs])
@@ -259,7 +266,7 @@ def summarise(rows, out_dir, load_paths=True):
                 # the reference against itself: each nudge against the unnudged run (how soon
                 # chaos alone parts two paths)
                 ref_by_nudge = {n: r for n, r, _ in ref_runs}
-                own = variant in ("reference", "torque: reference")
+                own = variant in (reference_name, "torque: reference")
                 for nudge, row, _ in runs:
                     if own and nudge == 0:
                         continue
@@ -301,7 +308,7 @@ def markdown(summary):
     return "\n".join(lines)
 
 
-def figure(summary, path):
+def figure(summary, path, reference_name="reference"):
     """90th-percentile error and agreement against cost, with the convergence criterion."""
     import matplotlib
     matplotlib.use("Agg")
@@ -312,7 +319,7 @@ def figure(summary, path):
               (axes[1], "agree", 100, "creatures that agree with the reference, %", 100 * AGREE_LIMIT))
     for ax, key, scale, label, limit in panels:
         for s in summary:
-            if s["variant"] in ("reference", "torque: reference"):
+            if s["variant"] in (reference_name, "torque: reference"):
                 continue
             marker = "s" if s["variant"].startswith("torque") else "o"
             colour = "black" if s["variant"] == "default" else None
@@ -323,7 +330,7 @@ def figure(summary, path):
         ax.set_xscale("log")
         ax.set_xlabel("cost per evaluation, relative to the default")
         ax.set_ylabel(label)
-    fig.suptitle("walk evaluation against a 1 kHz, 100-iteration reference "
+    fig.suptitle(f"walk evaluation against the variant '{reference_name}' "
                  "(dashed: the convergence criterion)")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
@@ -333,7 +340,12 @@ def report(args):
     rows = read_results(os.path.join(args.out, "results.tsv"))
     if not rows:
         raise StudyError(f"{args.out}/results.tsv: no results (run the study first)")
-    summary, reference = summarise(rows, args.out, load_paths=not args.no_paths)
+    if args.reference not in VARIANTS:
+        raise StudyError(f"--reference {args.reference!r}: not one of {', '.join(VARIANTS)}")
+    summary, reference = summarise(rows, args.out, load_paths=not args.no_paths,
+                                   reference_name=args.reference)
+    if not reference:
+        raise StudyError(f"{args.out}/results.tsv: no runs of the reference {args.reference!r}")
     print(markdown(summary))
     print()
     print("| creature | reference mean distance (m) | spread over nudges (m) |")
@@ -341,7 +353,7 @@ def report(args):
     for creature, r in sorted(reference.items()):
         print(f"| {creature} | {r['mean']:.3f} | {r['spread']:.3f} |")
     if args.figure:
-        figure(summary, args.figure)
+        figure(summary, args.figure, args.reference)
 
 
 def parse_arguments(argv):
@@ -362,6 +374,8 @@ def parse_arguments(argv):
     p.add_argument("--out", required=True)
     p.add_argument("--figure", help="write the error-against-cost figure here")
     p.add_argument("--no-paths", action="store_true", help="skip the trajectory comparison")
+    p.add_argument("--reference", default="reference",
+                   help="the variant the others are compared with (default: reference)")
     args = parser.parse_args(argv)
     if args.command == "run":
         if args.perturbations < 1 or args.jobs < 1:

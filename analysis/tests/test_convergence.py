@@ -70,6 +70,29 @@ def test_summary_and_table_from_results_without_trajectories():
     assert "| default | 2 |" in table
 
 
+def test_any_variant_can_be_the_reference():
+    # against "reference" the default is 50 % off for b; against a reference at the default's
+    # controller rate it agrees for both creatures
+    rows = []
+    for creature, distances in (("a", {"reference": [1.0, 1.0], "default": [1.0, 1.0],
+                                       "reference, 240 Hz controller": [1.02, 1.02]}),
+                                ("b", {"reference": [2.0, 2.0], "default": [3.0, 3.0],
+                                       "reference, 240 Hz controller": [2.9, 2.9]})):
+        for variant, values in distances.items():
+            for nudge, value in enumerate(values):
+                rows.append({"creature": creature, "variant": variant, "nudge": str(nudge), "status": "ok",
+                             "fitness": repr(value), "steps": "100", "wall_seconds": "1", "trajectory": "-"})
+    plain = {s["variant"]: s for s in convergence.summarise(rows, ".", load_paths=False)[0]}
+    assert plain["default"]["agree"] == pytest.approx(0.5)
+    summary, reference = convergence.summarise(rows, ".", load_paths=False,
+                                               reference_name="reference, 240 Hz controller")
+    by_name = {s["variant"]: s for s in summary}
+    assert by_name["default"]["agree"] == pytest.approx(1.0)
+    assert by_name["reference, 240 Hz controller"]["median_error"] == 0
+    assert reference["b"]["mean"] == pytest.approx(2.9)
+    assert convergence.VARIANTS["reference, 240 Hz controller"]["physics.substeps"] == "5"
+
+
 def test_bad_inputs_name_what_is_wrong(tmp_path):
     done = subprocess.run([sys.executable, SCRIPT, "report", "--out", str(tmp_path)], capture_output=True, text=True)
     assert done.returncode == 4
@@ -82,6 +105,17 @@ def test_bad_inputs_name_what_is_wrong(tmp_path):
                            "--out", str(tmp_path), "--variant", "warp drive"], capture_output=True, text=True)
     assert done.returncode == 4
     assert "warp drive" in done.stderr
+    (tmp_path / "results.tsv").write_text(
+        "creature\tvariant\tnudge\tstatus\tfitness\tsteps\twall_seconds\ttrajectory\n"
+        "a\tdefault\t0\tok\t1.0\t100\t1\t-\n")
+    done = subprocess.run([sys.executable, SCRIPT, "report", "--out", str(tmp_path), "--no-paths",
+                           "--reference", "warp drive"], capture_output=True, text=True)
+    assert done.returncode == 4
+    assert "--reference 'warp drive'" in done.stderr
+    done = subprocess.run([sys.executable, SCRIPT, "report", "--out", str(tmp_path), "--no-paths"],
+                          capture_output=True, text=True)
+    assert done.returncode == 4
+    assert "no runs of the reference 'reference'" in done.stderr
 
 
 @pytest.mark.skipif("CAMBRIAN_BINARY" not in os.environ, reason="CTest names the binary")

@@ -6,7 +6,8 @@
 # by a millionth, and analysis/convergence.py prints the table and draws the figure.
 # usage: bash jobs/studies/convergence.sh [VARIANT ...]   (default: the variants of the docs table)
 #   environment: CAMBRIAN (binary, default build/release/src/app/cambrian), OUT (default
-#   runs/convergence), JOBS (evaluations at once, default: the number of cores)
+#   runs/convergence), JOBS (evaluations at once, default: the number of cores), REFERENCE (the
+#   variant the table compares with, default "reference"; it must be among those run)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cambrian=${CAMBRIAN:-build/release/src/app/cambrian}
@@ -24,4 +25,4 @@ done
   --creatures jobs/studies/convergence/creatures --creatures jobs/creatures \
   --out "$out" --perturbations 24 --jobs "${JOBS:-$(nproc)}" --quiet "${args[@]}"
 MPLBACKEND=Agg /usr/bin/python3 analysis/convergence.py report --out "$out" \
-  --figure "$out/convergence.png"
+  --figure "$out/convergence.png" --reference "${REFERENCE:-reference}"
