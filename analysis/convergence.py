@@ -77,6 +77,20 @@ for rate in (300, 360):
 VARIANTS["reference, 240 Hz controller"] = {
     "physics.time_step": "0.004166666666666667", "physics.substeps": "5",
     "physics.solver_iterations": "100"}
+# the same, twice as fine: is the reference itself converged?
+VARIANTS["reference, 240 Hz controller, x10"] = {
+    **VARIANTS["reference, 240 Hz controller"], "physics.substeps": "10"}
+# more substeps or a tighter solve at the default's controller rate
+for substeps in (3, 4):
+    VARIANTS[f"240Hz x{substeps}, 20 it, tol 1e-4"] = {
+        "physics.time_step": "0.004166666666666667", "physics.substeps": str(substeps),
+        "physics.solver_iterations": "20", "physics.solver_tolerance": "0.0001"}
+VARIANTS["240Hz x1, 20 it, tol 1e-4"] = {
+    "physics.time_step": "0.004166666666666667", "physics.substeps": "1",
+    "physics.solver_iterations": "20", "physics.solver_tolerance": "0.0001"}
+VARIANTS["240Hz x2, 50 it, tol 1e-5"] = {
+    "physics.time_step": "0.004166666666666667", "physics.substeps": "2",
+    "physics.solver_iterations": "50", "physics.solver_tolerance": "0.00001"}
 # the joint damping model of before physics.implicit_damping, at the default steps
 VARIANTS["default, explicit damping"] = {"physics.implicit_damping": "false",
                                           "physics.solver_tolerance": "0.0001"}
@@ -297,6 +311,28 @@ def summarise(rows, out_dir, load_paths=True, reference_name="reference"):
     return summary, reference
 
 
+def bootstrap_agreement(rows, variant, reference_name, resamples, seed=1):
+    """5th, 50th and 95th percentile of the share of creatures that agree with the reference
+    when each creature's nudges are resampled with replacement (both the variant's and the
+    reference's): how well the agreement of a few creatures is resolved."""
+    by = {}
+    for row in rows:
+        fitness = float(row["fitness"]) if row["status"] == "ok" else 0.0
+        by.setdefault((row["creature"], row["variant"]), []).append(fitness)
+    creatures = sorted(c for c, v in by if v == variant and (c, reference_name) in by)
+    if not creatures:
+        return None
+    rng = np.random.default_rng(seed)
+    shares = []
+    for _ in range(resamples):
+        agreeing = 0
+        for creature in creatures:
+            values, ref_values = np.array(by[(creature, variant)]), np.array(by[(creature, reference_name)])
+            agreeing += agrees(rng.choice(values, len(values)), rng.choice(ref_values, len(ref_values)))
+        shares.append(agreeing / len(creatures))
+    return tuple(float(q) for q in np.percentile(shares, [5, 50, 95]))
+
+
 def markdown(summary):
     lines = ["| variant | creatures | median error | 90 % error | within 10 % | agree | "
              "path with reference (s) | failed runs | cost vs default |",
@@ -352,6 +388,14 @@ def report(args):
     print("| --- | --- | --- |")
     for creature, r in sorted(reference.items()):
         print(f"| {creature} | {r['mean']:.3f} | {r['spread']:.3f} |")
+    if args.bootstrap:
+        print()
+        print(f"| variant | agree, 5th / 50th / 95th percentile over {args.bootstrap} resamples of the nudges |")
+        print("| --- | --- |")
+        for s in summary:
+            spread = bootstrap_agreement(rows, s["variant"], args.reference, args.bootstrap)
+            if spread:
+                print(f"| {s['variant']} | {' / '.join(f'{100 * q:.0f} %' for q in spread)} |")
     if args.figure:
         figure(summary, args.figure, args.reference)
 
@@ -374,6 +418,8 @@ def parse_arguments(argv):
     p.add_argument("--out", required=True)
     p.add_argument("--figure", help="write the error-against-cost figure here")
     p.add_argument("--no-paths", action="store_true", help="skip the trajectory comparison")
+    p.add_argument("--bootstrap", type=int, default=0, metavar="N",
+                   help="also the agreement's spread over N resamples of the nudges")
     p.add_argument("--reference", default="reference",
                    help="the variant the others are compared with (default: reference)")
     args = parser.parse_args(argv)

@@ -93,6 +93,21 @@ def test_any_variant_can_be_the_reference():
     assert convergence.VARIANTS["reference, 240 Hz controller"]["physics.substeps"] == "5"
 
 
+def test_the_bootstrap_spreads_a_marginal_agreement_and_not_a_clear_one():
+    rows = []
+    for creature, (reference, variant) in {"clear": ([1.0, 1.0, 1.0, 1.0], [1.0, 1.0, 1.0, 1.0]),
+                                           "marginal": ([1.0, 1.4, 1.0, 1.4], [1.1, 1.5, 1.3, 1.6])}.items():
+        for name, values in (("reference", reference), ("default", variant)):
+            for nudge, value in enumerate(values):
+                rows.append({"creature": creature, "variant": name, "nudge": str(nudge), "status": "ok",
+                             "fitness": repr(value), "steps": "100", "wall_seconds": "1", "trajectory": "-"})
+    low, middle, high = convergence.bootstrap_agreement(rows, "default", "reference", 200)
+    assert 0.5 <= low <= middle <= high <= 1.0
+    assert low == 0.5 and high == 1.0  # "clear" always agrees, "marginal" only sometimes
+    assert convergence.bootstrap_agreement(rows, "reference", "reference", 50)[2] == 1.0
+    assert convergence.bootstrap_agreement(rows, "warp drive", "reference", 10) is None
+
+
 def test_bad_inputs_name_what_is_wrong(tmp_path):
     done = subprocess.run([sys.executable, SCRIPT, "report", "--out", str(tmp_path)], capture_output=True, text=True)
     assert done.returncode == 4
