@@ -3,6 +3,8 @@
 
 #include "cambrian/error.hpp"
 
+#include "core/small_file.hpp"
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -56,15 +58,15 @@ po::options_description schemaOptions(const SettingsSchema& schema, bool with_de
   return all;
 }
 
-// the text of a file; ConfigError naming it when it cannot be read
+// an experiment file is text of a few kilobytes
+constexpr std::size_t kConfigFileLimit = 16u << 20;
+
+// the text of a config file; ConfigError naming it when it cannot be read
 std::string readFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
-    throw ConfigError(path + ": cannot open the config file");
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  if (file.bad())
-    throw ConfigError(path + ": cannot read the config file");
-  return text;
+  SmallFile file = readSmallFile(path, kConfigFileLimit);
+  if (!file.problem.empty())
+    throw ConfigError(path + ": the config file " + file.problem);
+  return std::move(file.bytes);
 }
 
 // a table cell: pipes escaped so they do not split the cell

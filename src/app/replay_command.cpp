@@ -322,9 +322,18 @@ void printHeader(const HistoryReader& history, const Individual& row, const Outc
   std::printf("eval seed      %llu\n", static_cast<unsigned long long>(eval_seed));
 }
 
+// an id or a generation: a whole number, not "-1" (which would wrap to 2^64 - 1)
+std::uint64_t wholeNumber(const char* option, const std::string& text) {
+  std::uint64_t value = 0;
+  if (!parseSeed(text, value))
+    throw Error(ExitCode::usage, std::string(option) + " " + text +
+                                     ": expected a whole number in 0..18446744073709551615");
+  return value;
+}
+
 // the command line: the options of replay itself; the settings' are added by parseOptions
-po::options_description replayOptions(std::string& history_path, std::uint64_t& id,
-                                      std::uint64_t& generation, std::string& export_path,
+po::options_description replayOptions(std::string& history_path, std::string& id,
+                                      std::string& generation, std::string& export_path,
                                       double& frame_rate, std::string& genome_path,
                                       std::string& config_path) {
   po::options_description cli(
@@ -372,11 +381,10 @@ po::options_description replayOptions(std::string& history_path, std::uint64_t& 
 }  // namespace
 
 int runReplay(int argc, char** argv) {
-  std::string history_path, export_path, genome_path, config_path;
-  std::uint64_t id = 0, generation = 0;
+  std::string history_path, export_path, genome_path, config_path, id_text, generation_text;
   double frame_rate = 30;
-  po::options_description cli = replayOptions(history_path, id, generation, export_path, frame_rate,
-                                              genome_path, config_path);
+  po::options_description cli = replayOptions(history_path, id_text, generation_text, export_path,
+                                              frame_rate, genome_path, config_path);
 
   // the settings given on the command line or in --config (the stored ones are the base)
   CreatureSettings given;
@@ -403,8 +411,11 @@ int runReplay(int argc, char** argv) {
   refuseOverwritingHistory("--save-genome", genome_path, history_path);
   if (!export_path.empty() && export_path == genome_path)
     throw Error(ExitCode::usage, "--export and --save-genome name the same file " + export_path);
-  if (!export_path.empty())
-    frameStrideFor(frame_rate, 1.0);
+  // a bad number is refused whether or not it would be used
+  std::uint64_t id = vm.count("id") ? wholeNumber("--id", id_text) : 0;
+  std::uint64_t generation =
+      vm.count("generation") ? wholeNumber("--generation", generation_text) : 0;
+  frameStrideFor(frame_rate, 1.0);  // a bad --frame-rate is refused, used or not
 
   // the history, its settings with the given ones on top, and the creature's row
   HistoryReader history(history_path);

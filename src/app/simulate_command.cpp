@@ -57,6 +57,8 @@ int runSimulate(int argc, char** argv) {
     throw Error(ExitCode::usage, "the argument ('" + seed_text +
                                      "') for option '--seed' is invalid: not a seed (0..2^64-1)");
 
+  frameStrideFor(frame_rate, 1.0);  // a bad --frame-rate is refused, used or not
+
   // the creature
   bool random = vm.count("random") > 0;
   if (random == !genome_path.empty())

@@ -3,6 +3,8 @@
 #include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
 
+#include "core/small_file.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -15,6 +17,9 @@
 namespace cambrian {
 
 namespace {
+
+// a genome file: text or bytes of at most a few megabytes
+constexpr std::size_t kGenomeFileLimit = 64u << 20;
 
 // the first word of a text form, comments (from '#') and blank lines skipped
 std::string firstWord(const std::string& text) {
@@ -33,13 +38,11 @@ std::string firstWord(const std::string& text) {
 }  // namespace
 
 Genotype readGenomeFile(const std::string& path) {
-  // whole file into memory
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(path + ": cannot open genome file");
-  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad())
-    throw InputError(path + ": cannot read genome file");
+  // whole file into memory, bounded
+  SmallFile file = readSmallFile(path, kGenomeFileLimit);
+  if (!file.problem.empty())
+    throw InputError(path + ": the genome file " + file.problem);
+  const std::string& content = file.bytes;
 
   // binary when it starts with an encoding's tag; errors name the path
   std::array<char, 4> tag{};

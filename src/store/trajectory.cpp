@@ -159,7 +159,7 @@ std::uint64_t frameStrideFor(double frame_rate, double time_step) {
   // both must be positive and finite
   if (!(frame_rate > 0) || !std::isfinite(frame_rate)) {
     std::ostringstream message;
-    message << "frame rate = " << frame_rate << " Hz: must be > 0";
+    message << "frame rate = " << frame_rate << " Hz: must be > 0 and finite";
     throw ConfigError(message.str());
   }
   if (!(time_step > 0) || !std::isfinite(time_step)) {

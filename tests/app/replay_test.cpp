@@ -189,6 +189,13 @@ TEST_F(ReplayCommand, BadInput) {
   expect("--history " + history_ + " --id 1 --generation 0", ExitCode::usage, "--generation");
   expect("--history " + history_ + " --best --export " + dir_ + "/x.h5 --frame-rate 0",
          ExitCode::config, "frame rate");
+  // a negative id or generation does not wrap around; a bad frame rate is refused unused
+  expect("--history " + history_ + " --id -1", ExitCode::usage, "--id -1: expected a whole number");
+  expect("--history " + history_ + " --best --generation -2", ExitCode::usage,
+         "--generation -2: expected a whole number");
+  for (const char* rate : {"0", "nan", "-5"})
+    expect("--history " + history_ + " --best --frame-rate " + rate, ExitCode::config,
+           "frame rate");
   expect("--history " + history_ + " --best --export " + dir_ + "/no/such/dir/x.h5",
          ExitCode::output_file, dir_ + "/no/such/dir/x.h5");
 }

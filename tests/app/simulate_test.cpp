@@ -129,6 +129,27 @@ TEST(SimulateCommand, BadInput) {
   EXPECT_EQ(negative_seed.exit_code, code(ExitCode::usage));
   EXPECT_NE(negative_seed.output.find("'-2'"), std::string::npos) << negative_seed.output;
 
+  // a directory or an endless device as a genome or config file: refused, nothing read without
+  // bound; a bad frame rate even without --export
+  for (const std::string& arguments :
+       {std::string("simulate --genome /tmp"), std::string("inspect /tmp"),
+        std::string("simulate --genome /dev/zero"), std::string("inspect /dev/zero")}) {
+    auto result = runCambrian(arguments);
+    EXPECT_EQ(result.exit_code, code(ExitCode::input_file)) << arguments << result.output;
+    EXPECT_NE(result.output.find("the genome file is"), std::string::npos) << result.output;
+  }
+  for (const char* file : {"/tmp", "/dev/zero"}) {
+    auto result = runCambrian(std::string("simulate --random --config ") + file);
+    EXPECT_EQ(result.exit_code, code(ExitCode::config)) << file << result.output;
+    EXPECT_NE(result.output.find(std::string(file) + ": the config file is"), std::string::npos)
+        << result.output;
+  }
+  for (const char* rate : {"0", "nan", "-5"}) {
+    auto result = runCambrian(std::string("simulate --random --frame-rate ") + rate);
+    EXPECT_EQ(result.exit_code, code(ExitCode::config)) << rate << result.output;
+    EXPECT_NE(result.output.find("frame rate"), std::string::npos) << result.output;
+  }
+
   std::string truncated = std::string(CAMBRIAN_BINARY_DIR) + "/truncated.genome";
   std::ofstream(truncated, std::ios::binary) << "CMBG\x01";
   auto broken = runCambrian("simulate --genome " + truncated);
