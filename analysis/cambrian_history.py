@@ -39,20 +39,55 @@ def _names(values):
     return [_text(v) for v in values]
 
 
+# metadata read attempts of a SWMR reader: the sleeps between them double from a microsecond,
+# so 20 wait about a second in all (HDF5's default, 100, can wait for minutes on a damaged file)
+SWMR_READ_ATTEMPTS = 20
+
+
+def _bound_read_attempts(fapl):
+    """Sets the file access list's metadata read attempts (h5py has no call for it: HDF5's own,
+    from the library h5py loaded); leaves HDF5's default when that library cannot be found."""
+    try:
+        import ctypes
+        with open("/proc/self/maps") as maps:
+            paths = {line.split()[-1] for line in maps if "libhdf5" in line and "_hl" not in line}
+        for path in sorted(paths):
+            lib = ctypes.CDLL(path)
+            lib.H5Pset_metadata_read_attempts.argtypes = [ctypes.c_int64, ctypes.c_uint]
+            if lib.H5Pset_metadata_read_attempts(fapl.id, SWMR_READ_ATTEMPTS) >= 0:
+                return
+    except (OSError, AttributeError):
+        pass
+
+
+def open_hdf5(path):
+    """An HDF5 file for reading. A finished file opens plainly: a damaged one then fails at its
+    first bad checksum (OSError). Only a file a writer holds (a run going on, or one a crash left
+    so) is opened for SWMR reading, with a bounded number of metadata read attempts."""
+    path = str(path)
+    try:
+        return h5py.File(path, "r")
+    except FileNotFoundError:
+        raise
+    except OSError:
+        fapl = h5py.h5p.create(h5py.h5p.FILE_ACCESS)
+        fapl.set_fclose_degree(h5py.h5f.CLOSE_STRONG)
+        _bound_read_attempts(fapl)
+        fid = h5py.h5f.open(path.encode(), h5py.h5f.ACC_RDONLY | h5py.h5f.ACC_SWMR_READ, fapl=fapl)
+        return h5py.File(fid)
+
+
 class History:
     """An open history file; use as a context manager or call close()."""
 
     def __init__(self, path):
         self.path = str(path)
         try:
-            self.file = h5py.File(self.path, "r", swmr=True)
+            self.file = open_hdf5(self.path)
         except FileNotFoundError as error:
             raise HistoryError(f"{self.path}: no such history file") from error
-        except OSError:
-            try:
-                self.file = h5py.File(self.path, "r")
-            except OSError as error:
-                raise HistoryError(f"{self.path}: not a readable HDF5 file ({error})") from error
+        except OSError as error:
+            raise HistoryError(f"{self.path}: not a readable HDF5 file ({error})") from error
         fmt = _text(self.file.attrs.get("format", ""))
         if fmt != FORMAT_NAME:
             self.file.close()
@@ -213,7 +248,7 @@ def open_or_exit(path, program):
             labels = operator_labels(history, individuals)
             statuses = history.status_names()
             attributes = history.attributes
-    except (HistoryError, KeyError, OSError) as error:
+    except (HistoryError, KeyError, OSError, AttributeError, ValueError, RuntimeError) as error:
         print(f"{program}: error: {path}: {error}" if str(path) not in str(error)
               else f"{program}: error: {error}", file=sys.stderr)
         raise SystemExit(EXIT_INPUT)

@@ -21,6 +21,8 @@ try:
 except ImportError:  # pragma: no cover - Debian's python3-h5py is a dependency
     sys.exit("compare_histories.py: python3-h5py is missing (apt-get install python3-h5py)")
 
+from cambrian_history import open_hdf5  # noqa: E402 (the same directory)
+
 # columns whose values depend on timing or on which rank evaluated what
 TIMING_DATASETS = {
     "individuals/eval_seconds",
@@ -160,7 +162,7 @@ def compare(path_a, path_b, ignore=()):
     """The list of differences between two history files (empty: identical)."""
     differences = []
     skip = TIMING_DATASETS | set(ignore)
-    with h5py.File(path_a, "r", swmr=True) as a, h5py.File(path_b, "r", swmr=True) as b:
+    with open_hdf5(path_a) as a, open_hdf5(path_b) as b:
         compare_attributes("/", a, b, RUN_ATTRIBUTES | READ_APART, differences)
         compare_settings(a, b, differences)
         da, db = datasets(a), datasets(b)
@@ -175,6 +177,19 @@ def compare(path_a, path_b, ignore=()):
     return differences
 
 
+def unreadable(path):
+    """Why the file at `path` cannot be read whole (its first bad object), or None."""
+    try:
+        with open_hdf5(path) as file:
+            dict(file.attrs)
+            for dataset in datasets(file).values():
+                dict(dataset.attrs)
+                dataset[()]
+    except Exception as error:  # whatever h5py raises on damaged bytes
+        return str(error) or type(error).__name__
+    return None
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -186,8 +201,13 @@ def main(argv=None):
     args = parser.parse_args(argv)
     try:
         differences = compare(args.a, args.b, args.ignore)
-    except (OSError, KeyError) as error:
-        print(f"compare_histories.py: cannot read: {error}", file=sys.stderr)
+    except Exception as error:  # a damaged file: say which
+        for path in (args.a, args.b):
+            why = unreadable(path)
+            if why:
+                print(f"compare_histories.py: {path}: cannot read ({why})", file=sys.stderr)
+                return 2
+        print(f"compare_histories.py: cannot read {args.a} or {args.b}: {error}", file=sys.stderr)
         return 2
     if not args.quiet:
         if differences:

@@ -50,6 +50,10 @@ Handle createFile(const std::string& path, H5F_libver_t oldest) {
   return Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
 }
 
+// metadata read attempts of a SWMR reader: the sleeps between them double from a microsecond,
+// so 20 wait about a second in all (HDF5's default, 100, can wait for minutes)
+constexpr unsigned kSwmrReadAttempts = 20;
+
 Handle openFile(const std::string& path, const char* kind, bool swmr, std::string& problem) {
   // missing, not HDF5, truncated or corrupt
   std::error_code error;
@@ -71,16 +75,20 @@ Handle openFile(const std::string& path, const char* kind, bool swmr, std::strin
     return Handle();
   }
 
-  // read-only, for SWMR reading first when asked (a file a writer may still be growing); without
-  // HDF5's file lock, as the history writer opens it (the flags must agree within a process)
+  // read-only, without HDF5's file lock, as the history writer opens it (the flags must agree
+  // within a process). A finished file opens plainly: a damaged one then fails at its first bad
+  // checksum. Only a file a writer holds (growing, or left so by a crash) needs SWMR reading,
+  // whose reader retries a bad checksum with doubling sleeps, by default 100 times (minutes on
+  // a damaged file): here a bounded number of times, about a second in all
   Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   H5Pset_file_locking(access.get(), false, true);
   Handle file;
-  if (swmr)
+  file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose);
+  if (!file.valid() && swmr) {
+    H5Pset_metadata_read_attempts(access.get(), kSwmrReadAttempts);
     file =
         Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, access.get()), H5Fclose);
-  if (!file.valid())
-    file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose);
+  }
   if (!file.valid())
     problem = "HDF5 file cannot be opened (truncated or corrupt)";
   return file;

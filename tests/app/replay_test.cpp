@@ -15,8 +15,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <unistd.h>
+#include <vector>
 
 namespace cambrian {
 namespace {
@@ -225,6 +227,27 @@ std::uint64_t replayedId(const std::string& output) {
 
 // a changed evaluation time (command line) and time step (config file) are listed with stored
 // and new values before the table; both outcomes are shown, nothing is compared, exit 0
+// a damaged history fails at once (exit 4, naming the file): a finished file is opened plainly,
+// not as SWMR, whose reader retries a bad metadata checksum for minutes
+TEST_F(ReplayCommand, ADamagedHistoryFailsAtOnce) {
+  std::ifstream in(history_, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::size_t> headers;  // object headers ("OHDR", checksummed)
+  for (std::size_t at = bytes.find("OHDR"); at != std::string::npos;
+       at = bytes.find("OHDR", at + 1))
+    headers.push_back(at);
+  ASSERT_GT(headers.size(), 9u);
+  for (std::size_t which : {3u, 6u, 9u}) {
+    std::string damaged = bytes;
+    damaged[headers[which] + 8] ^= 0x40;
+    std::string path = dir_ + "/damaged" + std::to_string(which) + ".h5";
+    std::ofstream(path, std::ios::binary) << damaged;
+    auto result = runCambrian("replay --history " + path + " --best");
+    EXPECT_EQ(result.exit_code, code(ExitCode::input_file)) << which << result.output;
+    EXPECT_NE(result.output.find(path), std::string::npos) << result.output;
+  }
+}
+
 TEST_F(ReplayCommand, ChangedSettingsAreShownNotCompared) {
   std::string stored_step =
       iniValues(HistoryReader(history_).attributes().config_text)["physics.time_step"];
