@@ -11,7 +11,7 @@ SmallFile readSmallFile(const std::string& path, std::size_t limit) {
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(path, error);
   if (error) {
-    file.problem = "cannot open: " + error.message();
+    file.problem = "cannot be opened (" + error.message() + ")";
     return file;
   }
   if (std::filesystem::is_directory(status)) {
@@ -20,7 +20,7 @@ SmallFile readSmallFile(const std::string& path, std::size_t limit) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    file.problem = "cannot open";
+    file.problem = "cannot be opened";
     return file;
   }
   // in blocks, so that a device or a pipe stops at the bound
@@ -35,7 +35,7 @@ SmallFile readSmallFile(const std::string& path, std::size_t limit) {
   }
   if (in.bad()) {
     file.bytes.clear();
-    file.problem = "cannot read";
+    file.problem = "cannot be read";
   }
   return file;
 }

@@ -11,8 +11,8 @@ namespace cambrian {
 /// A file's bytes, or why they could not be read.
 struct SmallFile {
   std::string bytes;
-  std::string
-      problem;  ///< empty when `bytes` holds the whole file; else why not ("is a directory")
+  std::string problem;  ///< empty when `bytes` holds the whole file; else why not ("is a directory,
+                        ///< not a file")
 };
 
 /// Reads `path` whole when it holds at most `limit` bytes. A pipe or a device is read up to the

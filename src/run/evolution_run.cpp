@@ -181,13 +181,12 @@ class EvolutionRun {
          << " rank(s))" << std::endl;
     HistoryRows kept;
     try {
-      history_ =
-          resumeHistory(run_.out_dir + "/history.h5", start_, historyAttributes(), run_.measures,
-                        kept, historyChunkRows(static_cast<std::uint64_t>(settings_.population)));
+      history_ = resumeHistory(
+          run_.out_dir + "/history.h5", start_, historyAttributes(), run_.measures, kept,
+          historyChunkRows(static_cast<std::uint64_t>(settings_.population)), checkpoint.digest);
     } catch (const InputError& e) {
-      throw Error(ExitCode::checkpoint, std::string(e.what()) +
-                                            " (needed to resume from checkpoint.h5); "
-                                            "`cambrian evolve --fresh` starts over");
+      throw Error(ExitCode::checkpoint, std::string(e.what()) + " (needed to resume from " + path +
+                                            "); `cambrian evolve --fresh` starts over");
     }
     for (Individual& row : kept.individuals)
       result_.individuals.push_back(tableRecord(std::move(row)));

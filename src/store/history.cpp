@@ -16,6 +16,7 @@
 #include <ctime>
 #include <filesystem>
 #include <limits>
+#include <sstream>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -547,17 +548,20 @@ std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint6
                                              HistoryAttributes attributes,
                                              const std::vector<MeasureInfo>& measures,
                                              HistoryRows& kept,
-                                             std::uint64_t individual_rows_per_chunk) {
+                                             std::uint64_t individual_rows_per_chunk,
+                                             std::optional<std::uint64_t> run_digest) {
   // the old rows (a crashed writer's file opens for SWMR reading)
   kept = HistoryRows{};
   std::vector<Individual> individuals;
   std::vector<GenerationRecord> rows;
+  HistoryAttributes stored;
   {
     HistoryReader reader(path);
     individuals = reader.individuals();
     rows = reader.generations();
+    stored = reader.attributes();
     if (attributes.start_time.empty())
-      attributes.start_time = reader.attributes().start_time;
+      attributes.start_time = stored.start_time;
   }
   if (rows.size() < generations)
     throw InputError(path + ": holds " + std::to_string(rows.size()) +
@@ -567,6 +571,24 @@ std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint6
     if (rows[g].generation != g)
       throw InputError(path + ": generation row " + std::to_string(g) + " holds generation " +
                        std::to_string(rows[g].generation) + " (corrupt history)");
+  }
+
+  // the rows to keep are the checkpoint's run: the same digest over them (ids, genomes, fitness)
+  if (run_digest) {
+    RunDigest digest;
+    for (const Individual& individual : individuals) {
+      if (individual.generation >= generations)
+        break;
+      digest.add(individual);
+    }
+    if (digest.value() != *run_digest) {
+      std::ostringstream message;
+      message << path << ": belongs to another run than the checkpoint (its rows of generations 0.."
+              << generations - 1 << " give run digest " << hex16(digest.value())
+              << ", the checkpoint's run " << hex16(*run_digest) << "; the history's seed "
+              << stored.seed << ", config hash " << stored.config_hash << "): nothing was changed";
+      throw InputError(message.str());
+    }
   }
 
   // a new file with the kept rows, generation by generation, renamed over the old one

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -91,13 +92,18 @@ struct HistoryRows {
 /// the rows of generations 0..generations-1 and drops later ones (they will be recomputed),
 /// rewrites it through `path`.resume.tmp renamed over `path` with `attributes` (start_time of
 /// the old file kept) and `measures`, and returns the writer ready to append generation
-/// `generations`; `kept` receives the rows kept. Throws InputError naming the file when it is
-/// unreadable or lacks one of those generations, Error(output_file) when it cannot be rewritten.
+/// `generations`; `kept` receives the rows kept. With `run_digest` (the RunDigest value of the
+/// run through generation `generations` - 1, as its checkpoint holds it), the kept rows must give
+/// that digest: a history of another run (another seed, population or settings) is refused
+/// before anything is rewritten. Throws InputError naming the file when it is unreadable, lacks
+/// one of those generations or belongs to another run, Error(output_file) when it cannot be
+/// rewritten.
 std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint64_t generations,
                                              HistoryAttributes attributes,
                                              const std::vector<MeasureInfo>& measures,
                                              HistoryRows& kept,
-                                             std::uint64_t individual_rows_per_chunk = 0);
+                                             std::uint64_t individual_rows_per_chunk = 0,
+                                             std::optional<std::uint64_t> run_digest = {});
 
 /// Rows per chunk of /individuals for a run appending `population` rows a generation: the
 /// smallest multiple of it of at least 64 rows (population 300: 300; 12: 72).

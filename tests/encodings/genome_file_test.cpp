@@ -65,7 +65,9 @@ TEST(GenomeFile, ReadsBinary) {
 TEST(GenomeFile, ErrorsNameThePath) {
   fs::path dir = scratch("errors");
   std::string missing = (dir / "missing.genome").string();
-  EXPECT_EQ(failure(missing), missing + ": cannot open genome file");
+  EXPECT_EQ(failure(missing),
+            missing + ": the genome file cannot be opened (No such file or directory)");
+  EXPECT_EQ(failure(dir.string()), dir.string() + ": the genome file is a directory, not a file");
   std::string bad = (dir / "bad.genome").string();
   std::ofstream(bad) << "cambrian-genome 1\nnode 0 density heavy\n";
   EXPECT_EQ(failure(bad), bad + ":2: node 0: expected a number for 'density', got 'heavy'");

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -570,6 +571,48 @@ TEST(HistoryResume, CutsBackAKilledWritersFileAndAppends) {
   EXPECT_EQ(reader.generations()[1].wall_seconds, 0.3);
   EXPECT_EQ(reader.individuals().size(), 15u);
   EXPECT_EQ(bytesOf(reader, 202), makeRows(2, 5)[2].genomeBytes());
+}
+
+TEST(HistoryResume, AHistoryOfAnotherRunIsRefusedAndLeftAlone) {
+  // the checkpoint's digest over generations 0 and 1 of this history, and of another run's
+  std::string path = tempPath("other_run.h5");
+  {
+    HistoryWriter writer(path, makeAttributes(), kMeasures);
+    for (int g = 0; g < 3; ++g)
+      writer.appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
+  }
+  RunDigest ours;
+  for (int g = 0; g < 2; ++g)
+    for (const Individual& row : makeRows(static_cast<std::uint64_t>(g), 5))
+      ours.add(row);
+  std::vector<Individual> changed = makeRows(1, 5);
+  changed[3].outcome.fitness += 1e-9;
+  RunDigest theirs;
+  for (const Individual& row : makeRows(0, 5))
+    theirs.add(row);
+  for (const Individual& row : changed)
+    theirs.add(row);
+  ASSERT_NE(ours.value(), theirs.value());
+
+  auto bytes = [&path] {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const std::string before = bytes();
+  HistoryRows kept;
+  try {
+    resumeHistory(path, 2, makeAttributes(), kMeasures, kept, 0, theirs.value());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": belongs to another run than the checkpoint"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(bytes(), before);  // nothing rewritten
+  EXPECT_FALSE(std::filesystem::exists(path + ".resume.tmp"));
+  // its own run's digest: resumed
+  auto writer = resumeHistory(path, 2, makeAttributes(), kMeasures, kept, 0, ours.value());
+  EXPECT_EQ(kept.individuals.size(), 10u);
 }
 
 TEST(HistoryResume, TooFewGenerationsIsAnInputErrorNamingTheFile) {
