@@ -44,11 +44,13 @@ CreatureSettings creatureSettingsOf(const HistoryReader& history) {
     // keys newer than the history: what its run used then (friction anchors off, ...)
     SettingsSchema schema;
     settings.declareSettings(schema);
-    for (const auto& [key, value] : schema.earlierRunValues()) {
+    // (a named pair, not a structured binding: clang 14 cannot capture those)
+    for (const auto& earlier : schema.earlierRunValues()) {
+      const std::string& key = earlier.first;
       bool stored = std::any_of(entries.begin(), entries.end(),
                                 [&key](const IniEntry& entry) { return entry.key == key; });
       if (!stored)
-        settings.set(key, value);
+        settings.set(key, earlier.second);
     }
     for (const IniEntry& entry : entries) {
       std::string section = entry.key.substr(0, entry.key.find('.'));
