@@ -5,7 +5,9 @@
 #include "encodings/directed_graph/gene_ranges.hpp"
 #include "encodings/directed_graph/genome.hpp"
 
+#include <bit>
 #include <charconv>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -17,6 +19,17 @@ namespace {
 
 constexpr const char* kHeader = "cambrian-genome";
 constexpr const char* kEnd = "end";  // the last statement of a version-2 text
+
+// whether a controller is the default one bit for bit (a -0 offset is written: it is not 0)
+bool isDefaultController(const JointControllerGene& controller) {
+  const JointControllerGene none;
+  auto same = [](double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  };
+  return controller.enabled == none.enabled && same(controller.amplitude, none.amplitude) &&
+         same(controller.frequency, none.frequency) && same(controller.phase, none.phase) &&
+         same(controller.offset, none.offset);
+}
 
 constexpr const char* kJointNames[] = {"rigid", "revolute", "universal", "spherical"};
 constexpr const char* kShapeNames[] = {"box"};
@@ -348,7 +361,7 @@ std::string genomeToText(const Genome& genome) {
     if (c.terminal_only)
       out << " terminal_only";
     out << "\n";
-    if (!(c.controller == JointControllerGene{})) {
+    if (!isDefaultController(c.controller)) {
       out << "  controller" << (c.controller.enabled ? "" : " off") << " amplitude "
           << formatNumber(c.controller.amplitude) << " frequency "
           << formatNumber(c.controller.frequency) << " phase " << formatNumber(c.controller.phase)

@@ -65,6 +65,20 @@ TEST(GenomeText, RoundTripUnusualValues) {
   EXPECT_EQ(parseGenomeText(genomeToText(g)), g) << genomeToText(g);
 }
 
+// a controller that differs from the default only in a zero's sign is written, so that the text
+// reads back to the same bytes (found by fuzzing: an off controller with offset -0 was left out)
+TEST(GenomeText, RoundTripNegativeZeroController) {
+  Genome g;
+  g.nodes.resize(1);
+  ConnectionGene c;
+  c.controller = {false, 0, 1, 0, -0.0};
+  g.connections.push_back(c);
+  c.controller = {false, -0.0, 1, 0, 0};
+  g.connections.push_back(c);
+  std::string text = genomeToText(g);
+  EXPECT_EQ(serializeGenome(parseGenomeText(text)), serializeGenome(g)) << text;
+}
+
 // a hand-written genome: comments, defaults, continuation lines, brain
 TEST(GenomeText, HandWrittenWithDefaults) {
   const std::string text = R"(# a comment before the header
