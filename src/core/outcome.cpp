@@ -4,6 +4,7 @@
 #include "core/outcome_bytes.hpp"
 
 #include <limits>
+#include <string>
 
 namespace cambrian {
 
@@ -66,10 +67,17 @@ Outcome readOutcome(ByteReader& r) {
   o.steps = r.u64();
   r.context("wall_seconds");
   o.wall_seconds = r.f64();
-  r.context("body counts");
-  o.parts = static_cast<int>(r.i64());
-  o.joints = static_cast<int>(r.i64());
-  o.neurons = static_cast<int>(r.i64());
+  // a body count is an int: a larger one would not be written back to the same bytes
+  auto bodyCount = [&r](const char* field) {
+    r.context(field);
+    std::int64_t count = r.i64();
+    if (count < std::numeric_limits<int>::min() || count > std::numeric_limits<int>::max())
+      r.fail(std::string(field) + " = " + std::to_string(count) + " is out of range");
+    return static_cast<int>(count);
+  };
+  o.parts = bodyCount("parts");
+  o.joints = bodyCount("joints");
+  o.neurons = bodyCount("neurons");
   r.context("message");
   o.message = r.text();
   r.context("measures");

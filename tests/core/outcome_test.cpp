@@ -80,5 +80,20 @@ TEST(Outcome, BadBytesAreRefused) {
   EXPECT_THROW(readOutcome(r), InputError);
 }
 
+// a body count beyond an int is refused, not cut to 32 bits (found by fuzzing: such a result
+// was accepted and written back to other bytes)
+TEST(Outcome, BodyCountsBeyondAnIntAreRefused) {
+  std::vector<std::uint8_t> bytes;
+  ByteWriter w(bytes);
+  writeOutcome(w, sample());
+  // parts, joints, neurons follow status, fitness, steps and wall_seconds (8 bytes each)
+  for (std::size_t field = 0; field < 3; ++field) {
+    std::vector<std::uint8_t> bad = bytes;
+    bad[32 + 8 * field + 4] = 1;  // 2^32 more
+    ByteReader r(bad.data(), bad.size(), "outcome");
+    EXPECT_THROW(readOutcome(r), InputError) << field;
+  }
+}
+
 }  // namespace
 }  // namespace cambrian
