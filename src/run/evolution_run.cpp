@@ -141,12 +141,18 @@ class EvolutionRun {
       return;
     makeOutputDirectory(run_.out_dir);
     std::string warning;
-    lock_.emplace(run_.out_dir, &warning);
+    RunLockWait wait;
+    wait.seconds = run_.lock_wait;
+    wait.say = [this](const std::string& what) {
+      out_ << "cambrian evolve: " << what << std::endl;
+    };
+    lock_.emplace(run_.out_dir, wait, &warning);
     if (!warning.empty())
       out_ << "cambrian evolve: warning: " << warning << std::endl;
     std::optional<CheckpointState> checkpoint;
+    const HistoryAttributes attributes = historyAttributes();
     if (!run_.fresh)
-      checkpoint = findCheckpoint(run_.out_dir);
+      checkpoint = findCheckpoint(run_.out_dir, &attributes);
     if (checkpoint) {
       resume(std::move(*checkpoint));
       return;

@@ -38,6 +38,13 @@ void RunSettings::declareSettings(SettingsSchema& s) {
         "outcome instead of being simulated again, for tasks whose outcome depends on nothing "
         "else (every task with bodies); the results are the same bits either way")
       .runOnly();
+  s.add("run.lock_wait", r.lock_wait,
+        "seconds to wait for the output directory's lock (DIR/run.lock) while another run holds "
+        "it: a run killed a moment ago still lets go of it, and a cluster file system may keep "
+        "a dead node's lock for its lease period; a live run on this host is refused after at "
+        "most 10 s")
+      .require([&r] { return r.lock_wait >= 0 && std::isfinite(r.lock_wait); }, "must be >= 0")
+      .runOnly();
   s.add("run.test_kill_at", r.test_kill_at,
         "testing: rank 0 SIGKILLs itself at POINT:GENERATION, POINT one of evaluation, history, "
         "checkpoint_write, checkpoint_rename, checkpoint_done")

@@ -24,6 +24,7 @@ struct RunSettings {
   double max_hours = 0;           ///< stop cleanly before this wall time (0: no limit)
   std::string test_kill_at;       ///< testing: "POINT:GENERATION" where rank 0 SIGKILLs itself
   bool reuse_outcomes = true;     ///< copies of an evaluated genome take its outcome
+  double lock_wait = 60;          ///< seconds to wait for DIR/run.lock held by a run that has ended
 
   // handed over by the command (not settings)
   ViabilityCheck viable;    ///< birth test for new individuals (none: accept all), rank 0 only

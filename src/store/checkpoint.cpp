@@ -453,7 +453,8 @@ CheckpointState readCheckpoint(const std::string& path) {
   return state;
 }
 
-std::optional<CheckpointState> findCheckpoint(const std::string& dir) {
+std::optional<CheckpointState> findCheckpoint(const std::string& dir,
+                                              const HistoryAttributes* this_run) {
   std::string path = checkpointPath(dir);
   std::string previous = previousCheckpointPath(dir);
   const std::string fresh = "; `cambrian evolve --fresh` starts over (overwriting " + dir + ")";
@@ -490,8 +491,11 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir) {
   std::string history = dir + "/history.h5";
   if (exists(history)) {
     std::vector<GenerationRecord> generations;
+    HistoryAttributes stored;
     try {
-      generations = HistoryReader(history).generations();
+      HistoryReader reader(history);
+      generations = reader.generations();
+      stored = reader.attributes();
     } catch (const Error& e) {
       throw Error(ExitCode::checkpoint,
                   std::string(e.what()) + "; there is no " + path +
@@ -505,7 +509,11 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir) {
     if (recorded)
       throw Error(ExitCode::checkpoint, path + ": missing, but " + history +
                                             " records that checkpoints were written" + fresh);
-    if (!generations.empty())
+    // killed before its first checkpoint: generation 0 of this very run, written again
+    bool this_runs_first = this_run && generations.size() == 1 && generations[0].generation == 0 &&
+                           stored.config_hash == this_run->config_hash &&
+                           stored.seed == this_run->seed;
+    if (!generations.empty() && !this_runs_first)
       throw Error(ExitCode::checkpoint,
                   history + ": holds " + std::to_string(generations.size()) +
                       " generation(s) but there is no " + path +

@@ -14,6 +14,8 @@
 
 namespace cambrian {
 
+struct HistoryAttributes;
+
 /// Version of the checkpoint layout; a reader refuses files with a newer one. Version 2 stores
 /// each outcome in its one byte form (version 1, one column per outcome field, is still read).
 constexpr int kCheckpointFormatVersion = 2;
@@ -62,8 +64,11 @@ CheckpointState readCheckpoint(const std::string& path);
 /// (a fresh run). Throws Error(checkpoint) naming the file when checkpoint.h5 is unreadable, or
 /// missing although checkpoint.prev.h5 exists or DIR/history.h5 records a written checkpoint;
 /// the message says whether checkpoint.prev.h5 is good (no automatic fallback) and that
-/// `--fresh` starts over.
-std::optional<CheckpointState> findCheckpoint(const std::string& dir);
+/// `--fresh` starts over. A history of this run (`this_run`: same config hash and seed) that
+/// holds generation 0 only is no obstacle: it is what a run killed between generation 0's append
+/// and its first checkpoint leaves, and starting fresh writes the same row again.
+std::optional<CheckpointState> findCheckpoint(const std::string& dir,
+                                              const HistoryAttributes* this_run = nullptr);
 
 /// Removes DIR/checkpoint.h5, checkpoint.prev.h5 and checkpoint.h5.tmp (a fresh start).
 /// Throws Error(output_file) naming a file that cannot be removed.

@@ -154,16 +154,47 @@ TEST(EvolveCommand, AJobKilledInItsFirstMinuteContinuesFromGeneration0) {
   EXPECT_EQ(test::lineStartingWith(resumed.output, "digest "), digest);
 }
 
+TEST(EvolveCommand, AJobKilledBeforeItsFirstCheckpointStartsAgainOnTheSameCommand) {
+  // generation 0's rows in the history, its checkpoint not yet written
+  std::string dir = freshDir("killed_before_first_checkpoint");
+  auto killed = runCambrian(tinyRun(dir, 3) + " --run.test_kill_at history:0");
+  EXPECT_NE(killed.exit_code, 0) << killed.output;
+  ASSERT_FALSE(std::filesystem::exists(dir + "/checkpoint.h5"));
+
+  // the same command writes generation 0 again and ends as a straight run does
+  auto again = runCambrian(tinyRun(dir, 3));
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("starting fresh"), std::string::npos) << again.output;
+  auto straight = runCambrian(tinyRun(freshDir("killed_before_first_checkpoint_straight"), 3));
+  std::string digest = test::lineStartingWith(straight.output, "digest ");
+  ASSERT_FALSE(digest.empty()) << straight.output;
+  EXPECT_EQ(test::lineStartingWith(again.output, "digest "), digest);
+
+  // another seed's run on that directory is still refused
+  std::filesystem::remove(dir + "/checkpoint.h5");
+  std::filesystem::remove(dir + "/checkpoint.prev.h5");
+  auto other = runCambrian(tinyRun(dir, 3) + " --seed 99");
+  EXPECT_EQ(other.exit_code, 6) << other.output;
+}
+
 TEST(EvolveCommand, ASecondRunOnTheSameDirectoryIsRefused) {
   std::string dir = freshDir("locked");
   // another process (this test) holds the directory's lock
   int fd = ::open(RunLock::pathIn(dir).c_str(), O_RDWR | O_CREAT, 0644);
   ASSERT_GE(fd, 0);
   ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
-  auto busy = runCambrian(tinyRun(dir));
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  std::string holder = "host " + std::string(host) + " pid " + std::to_string(::getpid()) + "\n";
+  ASSERT_EQ(::pwrite(fd, holder.data(), holder.size(), 0), static_cast<ssize_t>(holder.size()));
+  auto busy = runCambrian(tinyRun(dir) + " --run.lock_wait 0.5");
   EXPECT_EQ(busy.exit_code, 5) << busy.output;
   EXPECT_NE(busy.output.find("another cambrian evolve is writing"), std::string::npos)
       << busy.output;
+  EXPECT_NE(busy.output.find("pid " + std::to_string(::getpid()) + ", alive on this host"),
+            std::string::npos)
+      << busy.output;
+  EXPECT_NE(busy.output.find("waiting up to 0.5 s"), std::string::npos) << busy.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/history.h5"));
 
   // released: the run goes ahead

@@ -12,6 +12,10 @@
 #                 overwritten); run-only keys may change; --fresh starts over; raising
 #                 evolution.generations extends a finished run; a corrupt checkpoint is refused
 #   walk:         a tiny walk run killed and resumed equals the straight one
+#   kill_at_once: kill -9 at random moments (a seeded draw: the job's process group, which
+#                 leaves the ranks to die on their own, or every process of the job), each time
+#                 the same command again at once (it waits for the dying run's lock), until
+#                 done: identical to the straight run
 # NP 1 runs the binary without mpiexec (in-process evaluation).
 set -euo pipefail
 mode=$1 cambrian=$2 mpiexec=$3 npflag=$4 np=$5 work=$6 compare=$7
@@ -230,6 +234,55 @@ INI
     straight straight
     kill_and_resume walk_killed evaluation:1 1
     same straight walk_killed
+    ;;
+  kill_at_once)
+    sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 8000/; s/^generations = 6/generations = 50/;
+            s/^population = 12/population = 16/' "$work/run.ini"
+    straight straight
+    command=("$cambrian" evolve)
+    if [ "$np" -gt 1 ]; then
+      command=("$mpiexec" "$npflag" "$np" --oversubscribe "$cambrian" evolve)
+    fi
+    RANDOM=$((np * 1000 + 7))
+    killed=0
+    for trial in $(seq 1 12); do
+      delay=$(printf '%d.%03d' $((RANDOM % 2)) $((RANDOM % 1000 / 2 + 100)))
+      whole=$((RANDOM % 2))
+      # its own session, whose id the job writes first
+      rm -f "$work/session"
+      setsid bash -c 'echo $$ > "$0"; exec "${@}"' "$work/session" "${command[@]}" \
+        --config "$work/run.ini" --out "$work/trials" > "$work/trial$trial.txt" 2>&1 &
+      runner=$!
+      sleep "$delay"
+      for _ in $(seq 1 100); do
+        [ -s "$work/session" ] && break
+        sleep 0.01
+      done
+      session=$(cat "$work/session")
+      if [ "$whole" -eq 1 ]; then
+        pkill -KILL -s "$session" || true
+      else
+        kill -KILL -- "-$session" 2> /dev/null || true
+      fi
+      set +e
+      wait "$runner" 2> /dev/null
+      rc=$?
+      set -e
+      what="job's process group"
+      [ "$whole" -eq 1 ] && what="whole job"
+      # (what the ranks printed is lost with mpiexec: only a finished run's lines are kept)
+      echo "trial $trial: killed the $what after ${delay} s: exit $rc"
+      if grep -q '^digest ' "$work/trial$trial.txt"; then
+        break
+      fi
+      killed=$((killed + 1))
+      grep -q "another cambrian evolve is writing" "$work/trial$trial.txt" && exit 1
+    done
+    echo "$killed run(s) killed before the end"
+    [ "$killed" -ge 3 ]
+    job "$np" --config "$work/run.ini" --out "$work/trials" > "$work/trials.txt"
+    grep "resuming from" "$work/trials.txt" || true
+    same straight trials
     ;;
   *)
     echo "unknown mode $mode" >&2

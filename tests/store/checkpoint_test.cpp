@@ -309,6 +309,34 @@ TEST(Checkpoint, MissingButExpectedIsAnError) {
   EXPECT_NE(message.find("--fresh"), std::string::npos) << message;
   EXPECT_EQ(std::filesystem::file_size(dir + "/history.h5"), size_before);
 
+  // ... unless it is generation 0 of this very run (killed before its first checkpoint)
+  dir = tempDir("missing_first_of_this_run");
+  HistoryAttributes this_run;
+  this_run.config_hash = "0123456789abcdef";
+  this_run.seed = 7;
+  {
+    HistoryWriter writer(dir + "/history.h5", this_run, kMeasures);
+    writer.appendGeneration({}, GenerationRecord{});
+  }
+  EXPECT_FALSE(findCheckpoint(dir, &this_run).has_value());
+  for (auto other : {std::pair<std::string, std::uint64_t>{"0123456789abcdef", 8},
+                     std::pair<std::string, std::uint64_t>{"fedcba9876543210", 7}}) {
+    HistoryAttributes another = this_run;
+    std::tie(another.config_hash, another.seed) = other;
+    std::tie(code, message) = failure([&] { findCheckpoint(dir, &another); });
+    EXPECT_EQ(code, ExitCode::checkpoint);
+    EXPECT_NE(message.find("holds 1 generation(s)"), std::string::npos) << message;
+  }
+  {
+    HistoryWriter writer(dir + "/history.h5", this_run, kMeasures);
+    writer.appendGeneration({}, GenerationRecord{});
+    GenerationRecord second;
+    second.generation = 1;
+    writer.appendGeneration({}, second);
+  }
+  std::tie(code, message) = failure([&] { findCheckpoint(dir, &this_run); });
+  EXPECT_NE(message.find("holds 2 generation(s)"), std::string::npos) << message;
+
   // a history that is not one (junk, or another kind of HDF5 file): refused, kept
   dir = tempDir("missing_junk_history");
   std::ofstream(dir + "/history.h5") << "not an HDF5 file";
