@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git clang-format
+  clang libclang-rt-14-dev llvm
   libbullet-dev libbullet-extras-dev
   libopenmpi-dev openmpi-bin
   libhdf5-dev hdf5-tools
