@@ -117,17 +117,27 @@ class History:
         return {name: d[:rows] for name, d in datasets.items()}
 
     def generations(self):
-        """The /generations table: dict of column name -> numpy array, one entry per generation."""
-        return self._table("generations")
+        """The /generations table: dict of column name -> numpy array, one entry per generation.
+
+        Rows end at the first that was never filled in (row i must hold generation i and a write
+        time): an append cut short by a kill or a full disk leaves such rows behind."""
+        table = self._table("generations")
+        complete = (table["generation"] == np.arange(len(table["generation"]))) & (
+            table["unix_time"] > 0
+        )
+        rows = int(np.argmin(complete)) if not complete.all() else len(complete)
+        return {name: column[:rows] for name, column in table.items()}
 
     def individuals(self):
-        """The /individuals table without genome bytes, plus "measure:<name>" 1-D columns."""
+        """The /individuals table without genome bytes, plus "measure:<name>" 1-D columns: the
+        rows of the generations in generations() (a generation's individuals come first)."""
         table = self._table("individuals", skip=("genome_bytes",))
         stream = self.file["individuals/genome_bytes"]
         stream.refresh()
         size = stream.shape[0]
         complete = table["genome_offset"] + table["genome_size"] <= size
         rows = int(np.argmin(complete)) if not complete.all() else len(complete)
+        rows = min(rows, int(self.generations()["count"].sum()))
         table = {name: column[:rows] for name, column in table.items()}
         for index, name in enumerate(self.measure_names()):
             table["measure:" + name] = table["measures"][:, index]

@@ -142,3 +142,27 @@ def test_plot_help_and_bad_file(tmp_path):
     assert result.returncode == 0 and "--output" in result.stdout
     result = run_plot(str(tmp_path / "missing.h5"), "--output", str(tmp_path / "x.png"))
     assert result.returncode == 4 and "missing.h5" in result.stderr
+
+
+def test_rows_of_an_append_cut_short_are_not_read(history_path, tmp_path):
+    """A kill or a full disk during an append leaves rows that were extended but never filled
+    (zeros): the reader stops at the last generation whose row is in, and reads only its
+    individuals."""
+    import shutil
+
+    import h5py
+
+    torn = str(tmp_path / "torn.h5")
+    shutil.copy(history_path, torn)
+    with h5py.File(torn, "r+") as f:
+        for group, more in (("individuals", POPULATION), ("generations", 1)):
+            for name, dataset in f[group].items():
+                shape = list(dataset.shape)
+                shape[0] += more * (100 if name == "genome_bytes" else 1)
+                dataset.resize(shape)
+    with ch.History(torn) as h:
+        g = h.generations()
+        assert list(g["generation"]) == list(range(GENERATIONS))
+        table = h.individuals()
+        assert len(table["id"]) == POPULATION * GENERATIONS
+        assert int(table["generation"].max()) == GENERATIONS - 1

@@ -117,7 +117,14 @@ class EvolutionRun {
     result_.wall_seconds = secondsSince(run_start_);
     if (history_)
       history_->close();
-    writeTables(run_.out_dir, result_, run_.measures);
+    try {
+      writeTables(run_.out_dir, result_, run_.measures);
+    } catch (const Error& e) {
+      throw Error(e.code(), std::string(e.what()) + "; the run itself is complete in " +
+                                run_.out_dir +
+                                "/history.h5 and its checkpoint: make room and run the same "
+                                "command again to write the tables");
+    }
     return std::move(result_);
   }
 
@@ -259,6 +266,31 @@ class EvolutionRun {
     }
     if (final_write)
       closeTimes(record);
+    try {
+      writePending(record, final_write);
+    } catch (const Error& e) {
+      if (e.code() == ExitCode::output_file)
+        throw outputFailed(e);
+      throw;
+    }
+    pending_.reset();
+  }
+
+  // an output file that could not be written (a full disk, a quota, a directory gone or made
+  // read-only): the error, what is safe and how to go on
+  Error outputFailed(const Error& e) const {
+    std::string safe =
+        checkpointed_ > 0
+            ? checkpointPath(run_.out_dir) + " (continues from generation " +
+                  std::to_string(checkpointed_) + ") and the history up to it are intact"
+            : "no checkpoint was written yet, so the run starts again from generation 0";
+    return Error(e.code(), std::string(e.what()) + "; " + safe + ": make room (or make " +
+                               run_.out_dir +
+                               " writable again) and run the same command to continue");
+  }
+
+  // the pending generation's history rows, its checkpoint when one is due, its times completed
+  void writePending(GenerationRecord& record, bool final_write) {
     std::uint64_t g = record.generation;
     history_->appendGeneration(last_->individuals, record);
     testKillPoint("history", g);
@@ -275,7 +307,6 @@ class EvolutionRun {
     if (final_write)
       closeTimes(record);
     history_->completeLastGeneration(record);
-    pending_.reset();
   }
 
   // why the run should stop before generation g ("" to go on)

@@ -3,8 +3,11 @@
 
 #include "cambrian/error.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -76,18 +79,24 @@ std::string generationsTsvRow(const GenerationRecord& r) {
 void writeTextFileAtomically(const std::string& path, const std::string& text) {
   // temporary file next to the target, then rename over it
   std::string temporary = path + ".tmp";
+  auto fail = [&](const std::string& what) {
+    std::string reason = std::strerror(errno);
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw Error(ExitCode::output_file, path + ": " + what + ": " + reason);
+  };
   {
+    errno = 0;
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out)
-      throw Error(ExitCode::output_file, path + ": cannot open for writing");
+      fail("cannot open " + temporary + " for writing");
     out << text;
-    out.flush();
+    out.close();
     if (!out)
-      throw Error(ExitCode::output_file, path + ": write failed");
+      fail("cannot write " + temporary);
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    throw Error(ExitCode::output_file, path + ": cannot rename " + temporary + " into place");
-  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+    fail("cannot rename " + temporary + " into place");
 }
 
 }  // namespace cambrian

@@ -285,7 +285,8 @@ void writeFile(const std::string& path, const CheckpointState& state,
                const CheckpointStageObserver& observer) {
   QuietErrors quiet;
   auto fail = [&](const std::string& what) {
-    throw Error(ExitCode::output_file, path + ": " + what);
+    std::string reason = systemReason();
+    throw Error(ExitCode::output_file, path + ": " + what + (reason.empty() ? "" : ": " + reason));
   };
   Handle file = createFile(path, H5F_LIBVER_V110);
   if (!file.valid())
@@ -349,11 +350,16 @@ void writeCheckpoint(const std::string& dir, const CheckpointState& state,
   std::string temporary = path + ".tmp";
   std::string previous = previousCheckpointPath(dir);
 
-  // the temporary file, complete and on disk
-  writeFile(temporary, state, observer);
-  if (!syncPath(temporary, false))
-    throw Error(ExitCode::output_file,
-                temporary + ": fsync failed: " + std::strerror(errno) + " (disk full?)");
+  // the temporary file, complete and on disk (or gone: a full disk gets its space back)
+  try {
+    writeFile(temporary, state, observer);
+    if (!syncPath(temporary, false))
+      throw Error(ExitCode::output_file, temporary + ": fsync failed: " + std::strerror(errno));
+  } catch (const Error&) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
 
   // keep the current checkpoint as the previous one (a hard link: checkpoint.h5 stays put)
   if (exists(path)) {

@@ -25,6 +25,23 @@ herr_t Handle::reset() {
   return status;
 }
 
+std::string systemReason() {
+  // the innermost message that quotes the system's ("..., errno = 28, error message = '...'")
+  std::string reason;
+  auto visit = [](unsigned, const H5E_error2_t* error, void* data) -> herr_t {
+    std::string text = error->desc ? error->desc : "";
+    const std::string marker = "error message = '";
+    std::size_t at = text.find(marker);
+    if (at != std::string::npos) {
+      std::size_t end = text.find('\'', at + marker.size());
+      *static_cast<std::string*>(data) = text.substr(at + marker.size(), end - at - marker.size());
+    }
+    return 0;
+  };
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, visit, &reason);
+  return reason;
+}
+
 QuietErrors::QuietErrors() {
   // keep the printer for the destructor
   H5Eget_auto2(H5E_DEFAULT, &function_, &data_);

@@ -39,6 +39,11 @@ class Handle {
   herr_t (*close_)(hid_t) = nullptr;
 };
 
+/// The operating system's reason for the last failed HDF5 call on this thread, as HDF5's error
+/// stack records it ("No space left on device", "Disk quota exceeded", ...), or "" when the
+/// failure was not the system's. Call before the next HDF5 call clears the stack.
+std::string systemReason();
+
 /// Silences HDF5's error stack printing for the lifetime of the object (errors become ours).
 class QuietErrors {
  public:

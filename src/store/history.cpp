@@ -319,8 +319,9 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
     : path_(path), impl_(std::make_unique<Impl>()) {
   QuietErrors quiet;
   auto fail = [&](const std::string& what) {
+    std::string reason = systemReason();
     impl_.reset();
-    throw Error(ExitCode::output_file, path_ + ": " + what);
+    throw Error(ExitCode::output_file, path_ + ": " + what + (reason.empty() ? "" : ": " + reason));
   };
   if (measures.empty())
     throw Error(ExitCode::failure, path_ + ": a history needs at least one measure column");
@@ -498,8 +499,10 @@ void HistoryWriter::appendGeneration(const std::vector<Individual>& rows,
 
   // durable before the next generation starts
   if (!ok || H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL) < 0) {
-    throw Error(ExitCode::output_file,
-                path_ + ": cannot append generation " + std::to_string(g.generation));
+    std::string reason = systemReason();
+    throw Error(ExitCode::output_file, path_ + ": cannot append generation " +
+                                           std::to_string(g.generation) +
+                                           (reason.empty() ? "" : ": " + reason));
   }
 }
 
@@ -722,6 +725,11 @@ std::vector<Individual> HistoryReader::individuals() const {
   hsize_t byte_count = 0;
   if (!readColumn(group.get(), "genome_bytes", bytes, byte_count))
     throw InputError(path_ + ": dataset /individuals/genome_bytes missing or unreadable");
+  // only the rows of generations whose row is in (their individuals are written first)
+  std::uint64_t complete = 0;
+  for (const GenerationRecord& g : generations())
+    complete += g.stats.count;
+  rows = std::min<hsize_t>(rows, complete);
 
   // rows, checked against the byte stream and the enums
   std::vector<Individual> result;
@@ -798,9 +806,10 @@ std::vector<GenerationRecord> HistoryReader::generations() const {
     else
       integers[c->name].assign(rows, 0);
   }
-  std::vector<GenerationRecord> result(rows);
+  std::vector<GenerationRecord> result;
+  result.reserve(rows);
   for (hsize_t i = 0; i < rows; ++i) {
-    GenerationRecord& g = result[i];
+    GenerationRecord g;
     forEachGenerationField(g, [&](const char* name, auto& field) {
       using T = std::decay_t<decltype(field)>;
       if constexpr (std::is_floating_point_v<T>)
@@ -808,6 +817,11 @@ std::vector<GenerationRecord> HistoryReader::generations() const {
       else
         field = static_cast<T>(integers.at(name)[i]);
     });
+    // a generation is in the history once its row is: an append cut short (killed, disk full)
+    // leaves rows the writer extended but never filled, which read as zeros
+    if (g.generation != i || !(g.unix_time > 0))
+      break;
+    result.push_back(g);
   }
   return result;
 }

@@ -124,11 +124,14 @@ class HistoryReader {
   const HistoryAttributes& attributes() const { return attributes_; }
   /// The measure columns (name and unit), in column order.
   std::vector<MeasureInfo> measures() const;
-  /// Every individual row in file order: the genome decoded (InputError naming the row when it
-  /// does not decode), the outcome's fitness, status, measures (by name; NaN cells left out),
-  /// body counts and steps, evaluated set.
+  /// Every individual row of the generations in the history (generations()), in file order:
+  /// the genome decoded (InputError naming the row when it does not decode), the outcome's
+  /// fitness, status, measures (by name; NaN cells left out), body counts and steps, evaluated
+  /// set.
   std::vector<Individual> individuals() const;
-  /// Every generation row in file order.
+  /// Every generation row in file order, up to the first that was never filled in (row i must
+  /// hold generation i and a write time): an append cut short by a kill or a full disk leaves
+  /// such rows behind, and the generation's individual rows with them.
   std::vector<GenerationRecord> generations() const;
   /// The file's path.
   const std::string& path() const { return path_; }

@@ -12,6 +12,11 @@
 #                 overwritten); run-only keys may change; --fresh starts over; raising
 #                 evolution.generations extends a finished run; a corrupt checkpoint is refused
 #   walk:         a tiny walk run killed and resumed equals the straight one
+#   disk_full:    the output on a small tmpfs that fills at eleven points of the run (history
+#                 appends, checkpoints): exit 5 naming the file, the system's reason and the way
+#                 on; with room again the same command finishes identical to the straight run.
+#                 Skipped (exit 77) where the test may not mount a tmpfs; a file size limit
+#                 (ulimit -f) cannot stand in: it stops Open MPI's own shared-memory files
 #   kill_at_once: kill -9 at random moments (a seeded draw: the job's process group, which
 #                 leaves the ranks to die on their own, or every process of the job), each time
 #                 the same command again at once (it waits for the dying run's lock), until
@@ -283,6 +288,46 @@ INI
     job "$np" --config "$work/run.ini" --out "$work/trials" > "$work/trials.txt"
     grep "resuming from" "$work/trials.txt" || true
     same straight trials
+    ;;
+  disk_full)
+    sed -i 's/^population = 12/population = 60/; s/^generations = 6/generations = 10/' \
+      "$work/run.ini"
+    straight straight
+    final=$(du -sk "$work/straight" | cut -f1)
+    disk="$work/disk"
+    mkdir -p "$disk"
+    if ! mount -t tmpfs -o size=64k tmpfs "$disk" 2> /dev/null; then
+      echo "resume_check disk_full: skipped: this machine does not let the test mount a tmpfs"
+      exit 77
+    fi
+    trap 'umount "$disk" 2> /dev/null || true' EXIT
+    echo "the straight run's directory: $final KB"
+    stopped=0
+    for percent in 4 8 12 17 23 30 38 47 58 70 85; do
+      kb=$((final * percent / 100 + 16))
+      name=full_$percent
+      rm -rf "${disk:?}"/*
+      mount -o remount,size=${kb}k "$disk"
+      set +e
+      job "$np" --config "$work/run.ini" --out "$disk/run" > "$work/$name.first.txt" 2>&1
+      rc=$?
+      set -e
+      echo "$kb KB: exit $rc: $(grep -o 'rank 0: .*' "$work/$name.first.txt" | head -1 | cut -c1-300)"
+      if [ "$rc" -ne 0 ]; then
+        [ "$rc" -eq 5 ]
+        grep -q "No space left on device" "$work/$name.first.txt"
+        grep -q -e "run the same command to continue" \
+          -e "run the same command again to write the tables" "$work/$name.first.txt"
+        stopped=$((stopped + 1))
+      fi
+      # room again: the same command finishes the run
+      mount -o remount,size=$((final * 3))k "$disk"
+      job "$np" --config "$work/run.ini" --out "$disk/run" > "$work/$name.txt"
+      rm -rf "${work:?}/$name" && cp -r "$disk/run" "$work/$name"
+      same straight "$name"
+    done
+    echo "$stopped run(s) stopped by the full disk"
+    [ "$stopped" -ge 8 ]
     ;;
   *)
     echo "unknown mode $mode" >&2

@@ -615,6 +615,68 @@ TEST(HistoryResume, AHistoryOfAnotherRunIsRefusedAndLeftAlone) {
   EXPECT_EQ(kept.individuals.size(), 10u);
 }
 
+// every dataset of a group `more` rows longer, the new rows never written (read as zeros): what
+// an append cut short by a kill or a full disk leaves
+void extendUnwritten(const std::string& path, const char* group_name, hsize_t more) {
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  hid_t group = H5Gopen2(file, group_name, H5P_DEFAULT);
+  ASSERT_GE(group, 0);
+  hsize_t count = 0;
+  ASSERT_GE(H5Gget_num_objs(group, &count), 0);
+  for (hsize_t i = 0; i < count; ++i) {
+    char name[256] = {};
+    H5Gget_objname_by_idx(group, i, name, sizeof name);
+    hid_t dataset = H5Dopen2(group, name, H5P_DEFAULT);
+    hid_t space = H5Dget_space(dataset);
+    hsize_t dims[2] = {};
+    int rank = H5Sget_simple_extent_dims(space, dims, nullptr);
+    dims[0] += std::string(name) == "genome_bytes" ? more * 100 : more;
+    ASSERT_GE(H5Dset_extent(dataset, dims), 0) << name << " rank " << rank;
+    H5Sclose(space);
+    H5Dclose(dataset);
+  }
+  H5Gclose(group);
+  H5Fclose(file);
+}
+
+TEST(History, RowsOfAnAppendCutShortAreNotRead) {
+  std::string path = tempPath("torn.h5");
+  writeHistory(path, 2);
+  // generation 2's individual rows and its generation row extended, never filled
+  extendUnwritten(path, "individuals", 5);
+  extendUnwritten(path, "generations", 1);
+  {
+    HistoryReader reader(path);
+    EXPECT_EQ(reader.generations().size(), 2u);
+    std::vector<Individual> rows = reader.individuals();
+    ASSERT_EQ(rows.size(), 10u);
+    EXPECT_EQ(rows.back().generation, 1u);
+  }
+  // resume keeps the two generations and drops the torn rows
+  HistoryRows kept;
+  auto writer = resumeHistory(path, 2, makeAttributes(), kMeasures, kept);
+  EXPECT_EQ(kept.individuals.size(), 10u);
+  writer->appendGeneration(makeRows(2, 5), makeGeneration(2));
+  writer->close();
+  HistoryReader again(path);
+  EXPECT_EQ(again.generations().size(), 3u);
+  EXPECT_EQ(again.individuals().size(), 15u);
+
+  // individuals written, the generation row not: the generation is not in the history yet
+  std::string half = tempPath("torn_half.h5");
+  {
+    HistoryWriter writer(half, makeAttributes(), kMeasures);
+    writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
+    GenerationRecord unfinished = makeGeneration(1);
+    unfinished.generation = 0;  // what a zero-filled row reads as
+    writer.appendGeneration(makeRows(1, 5), unfinished);
+  }
+  HistoryReader reader(half);
+  EXPECT_EQ(reader.generations().size(), 1u);
+  EXPECT_EQ(reader.individuals().size(), 5u);
+}
+
 TEST(HistoryResume, TooFewGenerationsIsAnInputErrorNamingTheFile) {
   std::string path = tempPath("short.h5");
   {
