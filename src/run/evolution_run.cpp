@@ -279,20 +279,28 @@ class EvolutionRun {
   // an output file that could not be written (a full disk, a quota, a directory gone or made
   // read-only): the error, what is safe and how to go on
   Error outputFailed(const Error& e) const {
+    std::error_code error;
+    const std::string checkpoint = checkpointPath(run_.out_dir);
+    if (checkpointed_ > 0 && !std::filesystem::exists(checkpoint, error))
+      return Error(e.code(), std::string(e.what()) + "; " + checkpoint + " is gone too (was " +
+                                 run_.out_dir +
+                                 " removed?): this run cannot be continued; `--fresh` starts over");
     std::string safe =
         checkpointed_ > 0
-            ? checkpointPath(run_.out_dir) + " (continues from generation " +
-                  std::to_string(checkpointed_) + ") and the history up to it are intact"
+            ? checkpoint + " (continues from generation " + std::to_string(checkpointed_) +
+                  ") and the history up to it are intact"
             : "no checkpoint was written yet, so the run starts again from generation 0";
-    return Error(e.code(), std::string(e.what()) + "; " + safe + ": make room (or make " +
-                               run_.out_dir +
-                               " writable again) and run the same command to continue");
+    return Error(e.code(), std::string(e.what()) + "; " + safe +
+                               ": once that is put right (room on the disk, " + run_.out_dir +
+                               " writable), run the same command to continue");
   }
 
   // the pending generation's history rows, its checkpoint when one is due, its times completed
   void writePending(GenerationRecord& record, bool final_write) {
     std::uint64_t g = record.generation;
     history_->appendGeneration(last_->individuals, record);
+    if (std::string notice = history_->takeNotice(); !notice.empty())
+      out_ << "cambrian evolve: warning: " << notice << std::endl;
     testKillPoint("history", g);
 
     // a checkpoint every checkpoint_every generations or checkpoint_minutes, after the first

@@ -64,7 +64,14 @@ Handle createFile(const std::string& path, H5F_libver_t oldest) {
   // the file format bounds, then the file
   Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   H5Pset_libver_bounds(access.get(), oldest, H5F_LIBVER_LATEST);
-  return Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
+  hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
+  if (file < 0) {
+    // the failure's error stack outlives the property list's close (systemReason reads it)
+    hid_t stack = H5Eget_current_stack();
+    access.reset();
+    H5Eset_current_stack(stack);
+  }
+  return Handle(file, H5Fclose);
 }
 
 // metadata read attempts of a SWMR reader: the sleeps between them double from a microsecond,

@@ -6,6 +6,7 @@
 
 #include "core/hash.hpp"
 #include "store/hdf5_io.hpp"
+#include "store/held_file.hpp"
 
 #include <hdf5.h>
 
@@ -13,11 +14,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
+#include <fcntl.h>
 #include <filesystem>
 #include <limits>
 #include <sstream>
 #include <type_traits>
+#include <unistd.h>
 #include <unordered_map>
 #include <utility>
 
@@ -278,6 +282,47 @@ struct HistoryWriter::Impl {
     return file.reset() >= 0;
   }
 
+  // `path` must still name the writer's file (`held`, a descriptor kept across the appends,
+  // while HDF5 closes the file between generations). Deleted: the file is copied back from it
+  // and the notice says so. Replaced by another file: it is saved as PATH.own, the other file
+  // left alone, and Error(output_file) says so.
+  void stayAtPath(const std::string& path, std::uint64_t generations_in) {
+    if (held < 0)
+      return;
+    const PathState state = pathStateOf(held, path);
+    if (state == PathState::same)
+      return;
+    const std::string what = state == PathState::missing ? "deleted" : "replaced by another file";
+    if (file.valid() && !closeFile())
+      throw Error(ExitCode::output_file, path + ": " + what +
+                                             " while this run was writing it, and the open "
+                                             "file cannot be closed");
+    const std::string target = state == PathState::missing ? path : path + ".own";
+    copyOpenFileTo(held, target);
+    const std::string rows = "its " + std::to_string(generations_in) + " generation(s) so far";
+    if (state == PathState::replaced)
+      throw Error(ExitCode::output_file,
+                  path +
+                      ": replaced by another file while this run was writing it; the run's "
+                      "own history (" +
+                      rows + ") is saved as " + target +
+                      " and the other file is left as it is: put the run's history back at " +
+                      path);
+    ::close(held);
+    held = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    notice = path + ": deleted while this run was writing it; written back (" + rows +
+             "), and the run goes on";
+  }
+
+  int held = -1;  // the file, kept open across generations to notice and undo a deletion
+  ~Impl() {
+    if (held >= 0)
+      ::close(held);
+  }
+
+  std::string notice;                     // what the last append repaired, for the run
+  std::uint64_t generations_written = 0;  // generation rows in the file
+
   // reopens the file for SWMR writing and its datasets; false when any of it fails
   bool openFile(const std::string& path) {
     if (file.valid())
@@ -287,6 +332,8 @@ struct HistoryWriter::Impl {
     file = openFileForSwmrWriting(path);
     if (!file.valid())
       return false;
+    if (held < 0)
+      held = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     auto openAll = [&](const char* group, const std::vector<Column>& columns,
                        std::unordered_map<std::string, Handle>& datasets) {
       for (const Column& column : columns) {
@@ -332,6 +379,7 @@ HistoryWriter::HistoryWriter(const std::string& path, HistoryAttributes attribut
   impl_->file = createFile(path_, H5F_LIBVER_LATEST);
   if (!impl_->file.valid())
     fail("cannot create HDF5 file");
+  impl_->held = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
   hid_t file = impl_->file.get();
 
   // provenance on the root group
@@ -436,6 +484,7 @@ void HistoryWriter::appendGeneration(const std::vector<Individual>& rows,
   }
 
   QuietErrors quiet;
+  m.stayAtPath(path_, m.generations_written);
   if (!m.openFile(path_))
     throw Error(ExitCode::output_file, path_ + ": cannot open the history file to append to it");
   bool ok = true;
@@ -498,12 +547,20 @@ void HistoryWriter::appendGeneration(const std::vector<Individual>& rows,
   });
 
   // durable before the next generation starts
-  if (!ok || H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL) < 0) {
+  if (ok && H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL) >= 0) {
+    ++m.generations_written;
+  } else {
     std::string reason = systemReason();
     throw Error(ExitCode::output_file, path_ + ": cannot append generation " +
                                            std::to_string(g.generation) +
                                            (reason.empty() ? "" : ": " + reason));
   }
+}
+
+std::string HistoryWriter::takeNotice() {
+  if (!impl_)
+    return "";
+  return std::exchange(impl_->notice, std::string());
 }
 
 void HistoryWriter::completeLastGeneration(const GenerationRecord& record) {

@@ -62,8 +62,13 @@ class HistoryWriter {
 
   /// Appends the individuals and the row of one generation, then flushes the file.
   /// `generation.unix_time` is set to now when 0. Every measure an outcome carries must be one of
-  /// the file's (Error(failure) naming it otherwise); a missing one is stored as NaN.
+  /// the file's (Error(failure) naming it otherwise); a missing one is stored as NaN. The path
+  /// must still name the file: deleted since the last append, the file is written back there
+  /// from the open descriptor and goes on (notice() says so); replaced by another file, it is
+  /// saved as PATH.own and Error(output_file) says how to go on.
   void appendGeneration(const std::vector<Individual>& individuals, GenerationRecord generation);
+  /// What the last append had to repair, for the run to print ("" when nothing), then cleared.
+  std::string takeNotice();
   /// Rewrites the timing cells of the last generation row (rank0_serial_seconds,
   /// rank0_cpu_seconds, checkpoint_seconds, wall_seconds) from `record`, once what follows its
   /// append (the append itself, a checkpoint) is done, and flushes; does nothing when no row

@@ -17,6 +17,14 @@
 #                 on; with room again the same command finishes identical to the straight run.
 #                 Skipped (exit 77) where the test may not mount a tmpfs; a file size limit
 #                 (ulimit -f) cannot stand in: it stops Open MPI's own shared-memory files
+#   worker_killed: a worker rank SIGKILLed mid-run: the job ends within a minute, the launcher's
+#                 message naming the rank, and the same command resumes to the straight run
+#   lost_files:   history.h5 deleted mid-run: written back from the open file, the run goes on to
+#                 the straight run's end; replaced mid-run by another file: exit 5, the run's own
+#                 history saved as history.h5.own, the other file untouched, and after moving it
+#                 back the same command finishes; the output directory made read-only mid-run
+#                 (checked as an unprivileged user): exit 5 with the reason, and the same command
+#                 finishes once it is writable again
 #   kill_at_once: kill -9 at random moments (a seeded draw: the job's process group, which
 #                 leaves the ranks to die on their own, or every process of the job), each time
 #                 the same command again at once (it waits for the dying run's lock), until
@@ -288,6 +296,114 @@ INI
     job "$np" --config "$work/run.ini" --out "$work/trials" > "$work/trials.txt"
     grep "resuming from" "$work/trials.txt" || true
     same straight trials
+    ;;
+  worker_killed)
+    sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 20000/; s/^generations = 6/generations = 12/' \
+      "$work/run.ini"
+    straight straight
+    (job_exec "$np" --config "$work/run.ini" --out "$work/lost" > "$work/lost.first.txt" \
+      2> "$work/lost.err") &
+    launcher=$!
+    # a checkpoint after generation 1 or later, then a worker (any rank but the lock's holder)
+    for _ in $(seq 1 600); do
+      [ -s "$work/lost/checkpoint.prev.h5" ] && break
+      sleep 0.05
+    done
+    holder=$(sed -n 's/^host .* pid \([0-9]*\)$/\1/p' "$work/lost/run.lock")
+    victim=$(pgrep -P "$launcher" | grep -v -x "$holder" | head -1)
+    echo "rank 0 is pid $holder; killing worker pid $victim"
+    [ -n "$victim" ]
+    kill -KILL "$victim"
+    # the job ends on its own, never a hang
+    for _ in $(seq 1 600); do
+      kill -0 "$launcher" 2> /dev/null || break
+      sleep 0.1
+    done
+    if kill -0 "$launcher" 2> /dev/null; then
+      echo "the job still runs a minute after its worker was killed" >&2
+      kill -KILL "$launcher"
+      exit 1
+    fi
+    set +e
+    wait "$launcher"
+    rc=$?
+    set -e
+    echo "job exit $rc"
+    cat "$work/lost.err"
+    [ "$rc" -ne 0 ]
+    grep -q "process rank [1-9][0-9]* .* exited on signal 9" "$work/lost.err"
+    job "$np" --config "$work/run.ini" --out "$work/lost" > "$work/lost.txt"
+    grep "resuming from" "$work/lost.txt"
+    same straight lost
+    ;;
+  lost_files)
+    sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 20000/; s/^generations = 6/generations = 12/' \
+      "$work/run.ini"
+    straight straight
+    # a run in the background, and the moment its checkpoint after generation 1 is in place
+    start() {
+      (job_exec "$np" --config "$work/run.ini" --out "$work/$1" --run.quiet false \
+        > "$work/$1.first.txt" 2>&1) &
+      background=$!
+      for _ in $(seq 1 600); do
+        [ -s "$work/$1/checkpoint.prev.h5" ] && break
+        sleep 0.05
+      done
+    }
+    finish() {
+      set +e
+      wait "$background"
+      rc=$?
+      set -e
+      echo "$1: exit $rc: $(grep -e 'warning: ' -e 'rank 0: ' "$work/$1.first.txt" | head -1)"
+    }
+    # deleted: the run notices at its next append, writes it back and goes on
+    start deleted
+    rm "$work/deleted/history.h5"
+    finish deleted
+    [ "$rc" -eq 0 ]
+    grep -q "history.h5: deleted while this run was writing it; written back" \
+      "$work/deleted.first.txt"
+    grep '^digest ' "$work/deleted.first.txt" > "$work/deleted.txt"
+    same straight deleted
+    # replaced: the other file is left alone, the run's own is saved beside it
+    start replaced
+    cp "$work/straight/individuals.tsv" "$work/other_file"
+    mv "$work/other_file" "$work/replaced/history.h5"
+    finish replaced
+    [ "$rc" -eq 5 ]
+    grep -q "history.h5: replaced by another file while this run was writing it; the run's own" \
+      "$work/replaced.first.txt"
+    cmp "$work/straight/individuals.tsv" "$work/replaced/history.h5"
+    mv "$work/replaced/history.h5.own" "$work/replaced/history.h5"
+    job "$np" --config "$work/run.ini" --out "$work/replaced" > "$work/replaced.txt"
+    same straight replaced
+    # read-only: root writes anyway, so this part runs as nobody (skipped where that is impossible)
+    if [ "$(id -u)" -eq 0 ] && command -v setpriv > /dev/null && id nobody > /dev/null 2>&1; then
+      as_user=(setpriv --reuid=nobody --regid=nogroup --clear-groups)
+      mkdir -p "$work/readonly"
+      chown nobody "$work/readonly"
+      chmod o+rx "$work" "$work/run.ini"
+      set +e
+      (exec "${as_user[@]}" bash -c "$(declare -f job_exec); cambrian=$cambrian mpiexec=$mpiexec \
+        npflag=$npflag; job_exec $np --config $work/run.ini --out $work/readonly \
+        --run.quiet false" > "$work/readonly.first.txt" 2>&1) &
+      background=$!
+      set -e
+      for _ in $(seq 1 600); do
+        [ -s "$work/readonly/checkpoint.prev.h5" ] && break
+        sleep 0.05
+      done
+      chmod a-w "$work/readonly"
+      finish readonly
+      chmod u+w "$work/readonly"
+      [ "$rc" -eq 5 ]
+      grep -q "Permission denied.*run the same command to continue" "$work/readonly.first.txt"
+      job "$np" --config "$work/run.ini" --out "$work/readonly" > "$work/readonly.txt"
+      same straight readonly
+    else
+      echo "the read-only directory part needs root (to act as nobody): skipped"
+    fi
     ;;
   disk_full)
     sed -i 's/^population = 12/population = 60/; s/^generations = 6/generations = 10/' \
