@@ -13,6 +13,9 @@ always consistent.
         print(h.attributes["config_text"])
 """
 
+import os
+import signal
+
 import h5py
 import numpy as np
 
@@ -60,11 +63,78 @@ def _bound_read_attempts(fapl):
         pass
 
 
+def _seconds_to_read_header():
+    """The bound on the probe's time (CAMBRIAN_HEADER_READ_SECONDS, as the C++ readers)."""
+    try:
+        return max(1, int(os.environ.get("CAMBRIAN_HEADER_READ_SECONDS", "20")))
+    except ValueError:
+        return 20
+
+
+def _probe(path):
+    """None when the header of `path` (its attributes and those of every group and dataset) may
+    be read in this process, else what went wrong. It is read first in a child process (a fresh
+    interpreter): a damaged file can send HDF5 1.10 into an endless loop there (found by fuzzing:
+    H5HG_read on a string attribute) or crash it, which no exception catches; how the child ends
+    tells. Known and open: on some damaged files HDF5 crashes later, reading data, in whichever
+    process reads it (the C++ readers refuse those files cleanly)."""
+    import subprocess
+    import sys
+
+    seconds = _seconds_to_read_header()
+    code = ("import sys; sys.path.insert(0, sys.argv[1]); import cambrian_history; "
+            "cambrian_history._read_header(sys.argv[2])")
+    here = os.path.dirname(os.path.abspath(__file__))
+    try:
+        done = subprocess.run([sys.executable, "-c", code, here, path], timeout=seconds,
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    except subprocess.TimeoutExpired:
+        return (f"reading the file's header did not end in {seconds} s: a damaged file that "
+                "sends HDF5 into an endless loop")
+    if done.returncode < 0:
+        name = signal.Signals(-done.returncode).name
+        return f"reading the file's header crashed HDF5 ({name}): a damaged file"
+    return None
+
+
+def _read_header(path):
+    """The probe's child: every attribute the readers may touch, each failure passed over (the
+    parent raises it properly), so that only a crash or a hang ends it differently."""
+
+    def attempt(read):
+        try:
+            return read()
+        except Exception:
+            return None
+
+    f = attempt(lambda: _open_hdf5_here(path))
+    if f is None:
+        return
+    attempt(lambda: dict(f.attrs.items()))
+    for group_name in attempt(lambda: list(f)) or []:
+        group = attempt(lambda: f[group_name])
+        attempt(lambda: dict(group.attrs.items()))
+        for name in attempt(lambda: list(group)) or []:
+            attempt(lambda: dict(group[name].attrs.items()))
+
+
 def open_hdf5(path):
-    """An HDF5 file for reading. A finished file opens plainly: a damaged one then fails at its
-    first bad checksum (OSError). Only a file a writer holds (a run going on, or one a crash left
-    so) is opened for SWMR reading, with a bounded number of metadata read attempts."""
+    """An HDF5 file for reading. The file is probed in a child process first (_probe): one that
+    crashes HDF5 or sends it into an endless loop is an OSError naming it. A finished file opens
+    plainly: a damaged one then fails at its first bad checksum (OSError). Only a file a writer
+    holds (a run going on, or one a crash left so) is opened for SWMR reading, with a bounded
+    number of metadata read attempts."""
     path = str(path)
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"{path}: no such file")
+    problem = _probe(path)
+    if problem:
+        raise OSError(problem)
+    return _open_hdf5_here(path)
+
+
+def _open_hdf5_here(path):
+    """open_hdf5 without the probe."""
     try:
         return h5py.File(path, "r")
     except FileNotFoundError:

@@ -72,3 +72,18 @@ def test_random_damage_never_hangs_a_reader(run_history, tmp_path):
         assert compared.returncode in (1, 2) or compared.returncode < 0, compared.stderr
         if compared.returncode == 2:
             assert str(bad) in compared.stderr
+
+
+def test_a_file_that_sends_hdf5_into_an_endless_loop_ends_within_the_bound(tmp_path):
+    # found by fuzzing: HDF5 1.10 loops in H5HG_read on one of this file's string attributes;
+    # the header is read first in a child process with a time bound
+    looping = os.path.join(os.path.dirname(ANALYSIS), "tests", "store", "data",
+                           "history_hdf5_endless_loop.h5")
+    env = dict(os.environ, MPLBACKEND="Agg", CAMBRIAN_HEADER_READ_SECONDS="2")
+    for script, arguments in (("lineage.py", [looping, "--output", tmp_path / "l.png"]),
+                              ("compare_histories.py", [looping, looping])):
+        done = subprocess.run([sys.executable, os.path.join(ANALYSIS, script), *map(str, arguments)],
+                              capture_output=True, text=True, env=env, timeout=LIMIT)
+        assert done.returncode in (ch.EXIT_INPUT, 2), done.stderr
+        assert looping in done.stderr
+        assert "did not end in 2 s" in done.stderr, done.stderr

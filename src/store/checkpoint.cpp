@@ -18,6 +18,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <optional>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
@@ -391,6 +392,7 @@ CheckpointState readCheckpoint(const std::string& path) {
   };
 
   // missing, not HDF5, truncated or corrupt
+  std::optional<HeaderReadBound> bound(std::in_place, path, static_cast<int>(ExitCode::checkpoint));
   std::string problem;
   Handle file = openFile(path, "checkpoint", false, problem);
   if (!file.valid())
@@ -423,6 +425,7 @@ CheckpointState readCheckpoint(const std::string& path) {
          " does not follow generation " + std::to_string(generation) + " (corrupt checkpoint)");
 
   readString(f, "config_hash", state.config_hash);
+  bound.reset();
 
   // the population, checked against the state hash (version 1: its own columns)
   Handle group(H5Gopen2(f, "population", H5P_DEFAULT), H5Gclose);

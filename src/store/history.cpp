@@ -691,6 +691,7 @@ HistoryReader::HistoryReader(const std::string& path)
     : path_(path), impl_(std::make_unique<Impl>()) {
   QuietErrors quiet;
   auto fail = [&](const std::string& what) { throw InputError(path_ + ": " + what); };
+  HeaderReadBound bound(path_, static_cast<int>(ExitCode::input_file));
 
   // missing, not HDF5, truncated or corrupt (a file still being written opens for SWMR reading)
   std::string problem;

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -246,6 +247,19 @@ TEST_F(ReplayCommand, ADamagedHistoryFailsAtOnce) {
     EXPECT_EQ(result.exit_code, code(ExitCode::input_file)) << which << result.output;
     EXPECT_NE(result.output.find(path), std::string::npos) << result.output;
   }
+}
+
+TEST_F(ReplayCommand, AHistoryThatSendsHdf5IntoAnEndlessLoopEndsWithinTheBound) {
+  // a damaged history found by fuzzing: HDF5 1.10 loops in H5HG_read on one of its attributes
+  std::string path =
+      std::string(CAMBRIAN_SOURCE_DIR) + "/tests/store/data/history_hdf5_endless_loop.h5";
+  ::setenv("CAMBRIAN_HEADER_READ_SECONDS", "2", 1);
+  auto result = runCambrian("replay --history " + path + " --best");
+  ::unsetenv("CAMBRIAN_HEADER_READ_SECONDS");
+  EXPECT_EQ(result.exit_code, code(ExitCode::input_file)) << result.output;
+  EXPECT_NE(result.output.find(path + ": reading the file's header did not end in 2 s"),
+            std::string::npos)
+      << result.output;
 }
 
 TEST_F(ReplayCommand, ChangedSettingsAreShownNotCompared) {
