@@ -18,10 +18,10 @@ rm -rf "$work" && mkdir -p "$work/bin"
 work=$(realpath "$work")
 
 # every job script parses and prints its usage
-for f in "$source"/jobs/slurm/* "$source"/jobs/pbs/* "$source"/tests/jobs/*.sh; do
+for f in "$source"/jobs/slurm/* "$source"/jobs/pbs/* "$source"/jobs/fuzz/*.sh "$source"/tests/jobs/*.sh; do
   bash -n "$f" || fail "bash -n $f"
 done
-for f in jobs/slurm/evolve.sbatch jobs/slurm/chain.sh jobs/pbs/evolve.pbs; do
+for f in jobs/slurm/evolve.sbatch jobs/slurm/chain.sh jobs/pbs/evolve.pbs jobs/fuzz/nightly.sh; do
   bash "$source/$f" --help > "$work/help.txt" || fail "$f --help exited non-zero"
   grep -q -i 'usage\|sbatch\|qsub' "$work/help.txt" || fail "$f --help printed no usage"
 done
