@@ -147,29 +147,153 @@ def _open_hdf5_here(path):
         return h5py.File(fid)
 
 
-class History:
-    """An open history file; use as a context manager or call close()."""
+class _FileSide:
+    """The child's side of a History: the open file and the reads the parent asks for."""
 
     def __init__(self, path):
-        self.path = str(path)
+        self.file = _open_hdf5_here(path)
+
+    def attributes(self):
+        return {key: value for key, value in self.file.attrs.items()}
+
+    def table(self, group_name, skip):
+        """Every column of a group, refreshed and cut to the rows all columns hold."""
+        group = self.file[group_name]
+        datasets = {name: group[name] for name in group if name not in skip}
+        for dataset in datasets.values():
+            dataset.refresh()
+        rows = min((d.shape[0] for d in datasets.values()), default=0)
+        return {name: d[:rows] for name, d in datasets.items()}
+
+    def length(self, name):
+        dataset = self.file[name]
+        dataset.refresh()
+        return dataset.shape[0]
+
+    def rows(self, name, start, stop):
+        dataset = self.file[name]
+        dataset.refresh()
+        return dataset[start:stop]
+
+    def attribute(self, name, key):
+        return self.file[name].attrs[key]
+
+
+def _serve(path):
+    """The child process of a History: reads requests (method name and arguments, pickled) from
+    stdin and answers each with (True, value) or (False, (kind, message)) on stdout."""
+    import pickle
+    import sys
+
+    requests, answers = sys.stdin.buffer, sys.stdout.buffer
+    sys.stdout = sys.stderr  # nothing else may write to the answers
+    side = None
+    while True:
         try:
-            self.file = open_hdf5(self.path)
+            method, arguments = pickle.load(requests)
+        except EOFError:
+            return
+        try:
+            if method == "open":
+                side = _FileSide(*arguments)
+                value = None
+            else:
+                value = getattr(side, method)(*arguments)
+            answer = (True, value)
         except FileNotFoundError as error:
-            raise HistoryError(f"{self.path}: no such history file") from error
+            answer = (False, ("missing", str(error)))
+        except KeyError as error:
+            answer = (False, ("key", str(error)))
+        except Exception as error:  # an HDF5 error of a damaged file, told to the parent
+            answer = (False, ("os", f"{type(error).__name__}: {error}"))
+        pickle.dump(answer, answers, protocol=pickle.HIGHEST_PROTOCOL)
+        answers.flush()
+
+
+class History:
+    """An open history file; use as a context manager or call close().
+
+    HDF5 is called in a child process that this object starts and talks to: on some damaged
+    files HDF5 1.10 crashes (SIGSEGV, SIGABRT) or loops without end instead of reporting an
+    error, and that must end the child, never the analysis. Such a file is a HistoryError naming
+    it; the header's reading is bounded (CAMBRIAN_HEADER_READ_SECONDS, default 20 s)."""
+
+    def __init__(self, path):
+        import subprocess
+        import sys
+
+        self.path = str(path)
+        if not os.path.exists(self.path):
+            raise HistoryError(f"{self.path}: no such history file")
+        here = os.path.dirname(os.path.abspath(__file__))
+        code = ("import sys; sys.path.insert(0, sys.argv[1]); import cambrian_history; "
+                "cambrian_history._serve(sys.argv[2])")
+        self._child = subprocess.Popen([sys.executable, "-c", code, here, self.path],
+                                       stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                       stderr=subprocess.DEVNULL)
+        try:
+            self._call("open", self.path, bound=_seconds_to_read_header())
+            raw = self._call("attributes", bound=_seconds_to_read_header())
+        except HistoryError:
+            self.close()
+            raise
         except OSError as error:
+            self.close()
             raise HistoryError(f"{self.path}: not a readable HDF5 file ({error})") from error
-        fmt = _text(self.file.attrs.get("format", ""))
+        fmt = _text(raw.get("format", ""))
         if fmt != FORMAT_NAME:
-            self.file.close()
+            self.close()
             raise HistoryError(f"{self.path}: not a cambrian history (format '{fmt}')")
-        version = int(self.file.attrs["format_version"])
+        version = int(raw["format_version"])
         if version > FORMAT_VERSION:
-            self.file.close()
+            self.close()
             raise HistoryError(f"{self.path}: format_version {version} is newer than {FORMAT_VERSION}")
-        self.attributes = {key: _text(value) for key, value in self.file.attrs.items()}
+        self.attributes = {key: _text(value) for key, value in raw.items()}
+
+    def _call(self, method, *arguments, bound=None):
+        """The child's answer to one request; HistoryError when the child crashed or did not
+        answer within `bound` seconds, KeyError / OSError as the child raised them."""
+        import pickle
+        import select
+
+        child = self._child
+        try:
+            pickle.dump((method, arguments), child.stdin, protocol=pickle.HIGHEST_PROTOCOL)
+            child.stdin.flush()
+            if bound is not None and not select.select([child.stdout], [], [], bound)[0]:
+                child.kill()
+                child.wait()
+                raise HistoryError(f"{self.path}: reading the file's header did not end in {bound} s: "
+                                   "a damaged file that sends HDF5 into an endless loop")
+            ok, value = pickle.load(child.stdout)
+        except (EOFError, BrokenPipeError, pickle.UnpicklingError):
+            code = child.wait()
+            how = signal.Signals(-code).name if code < 0 else f"exit {code}"
+            raise HistoryError(f"{self.path}: reading the file crashed HDF5 ({how}): a damaged file")
+        if ok:
+            return value
+        kind, message = value
+        if kind == "key":
+            raise KeyError(f"{self.path}: {message}")
+        raise OSError(f"{self.path}: {message}")
 
     def close(self):
-        self.file.close()
+        child, self._child = getattr(self, "_child", None), None
+        if child is None:
+            return
+        try:
+            child.stdin.close()
+        except OSError:
+            pass
+        try:
+            child.wait(timeout=10)
+        except Exception:
+            child.kill()
+            child.wait()
+        child.stdout.close()
+
+    def __del__(self):
+        self.close()
 
     def __enter__(self):
         return self
@@ -179,12 +303,7 @@ class History:
 
     def _table(self, group_name, skip=()):
         """Every column of a group, refreshed and cut to the rows all columns hold."""
-        group = self.file[group_name]
-        datasets = {name: group[name] for name in group if name not in skip}
-        for dataset in datasets.values():
-            dataset.refresh()
-        rows = min((d.shape[0] for d in datasets.values()), default=0)
-        return {name: d[:rows] for name, d in datasets.items()}
+        return self._call("table", group_name, tuple(skip))
 
     def generations(self):
         """The /generations table: dict of column name -> numpy array, one entry per generation.
@@ -202,9 +321,7 @@ class History:
         """The /individuals table without genome bytes, plus "measure:<name>" 1-D columns: the
         rows of the generations in generations() (a generation's individuals come first)."""
         table = self._table("individuals", skip=("genome_bytes",))
-        stream = self.file["individuals/genome_bytes"]
-        stream.refresh()
-        size = stream.shape[0]
+        size = self._call("length", "individuals/genome_bytes")
         complete = table["genome_offset"] + table["genome_size"] <= size
         rows = int(np.argmin(complete)) if not complete.all() else len(complete)
         rows = min(rows, int(self.generations()["count"].sum()))
@@ -213,21 +330,25 @@ class History:
             table["measure:" + name] = table["measures"][:, index]
         return table
 
+    def genome_stream(self):
+        """The whole concatenated genome byte stream as a numpy uint8 array (one read)."""
+        return self._call("rows", "individuals/genome_bytes", None, None)
+
     def measure_names(self):
-        return _names(self.file["individuals/measures"].attrs["names"])
+        return _names(self._call("attribute", "individuals/measures", "names"))
 
     def measure_units(self):
-        return _names(self.file["individuals/measures"].attrs["units"])
+        return _names(self._call("attribute", "individuals/measures", "units"))
 
     def operator_names(self):
-        return _names(self.file["individuals/operator"].attrs["names"])
+        return _names(self._call("attribute", "individuals/operator", "names"))
 
     def status_names(self):
-        return _names(self.file["individuals/status"].attrs["names"])
+        return _names(self._call("attribute", "individuals/status", "names"))
 
     def units(self, group_name, column):
         """The units attribute of a column ("s", "m", "1", ...)."""
-        return _text(self.file[group_name][column].attrs["units"])
+        return _text(self._call("attribute", f"{group_name}/{column}", "units"))
 
     def genome_bytes(self, individual_id):
         """The serialized genome of an individual, as bytes; KeyError when absent."""
@@ -237,8 +358,7 @@ class History:
             raise KeyError(f"{self.path}: no individual with id {individual_id}")
         i = where[0]
         offset, size = int(table["genome_offset"][i]), int(table["genome_size"][i])
-        stream = self.file["individuals/genome_bytes"]
-        return bytes(stream[offset : offset + size])
+        return bytes(self._call("rows", "individuals/genome_bytes", offset, offset + size))
 
 
 def load(path):
@@ -298,9 +418,7 @@ def first_rows(table):
 
 def genome_stream(history):
     """The whole concatenated genome byte stream as a numpy uint8 array (one read)."""
-    stream = history.file["individuals/genome_bytes"]
-    stream.refresh()
-    return stream[:]
+    return history.genome_stream()
 
 
 def genome_of(stream, table, row):

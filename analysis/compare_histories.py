@@ -191,6 +191,38 @@ def unreadable(path):
 
 
 def main(argv=None):
+    """Compares in a child process: on some damaged files HDF5 1.10 crashes (SIGSEGV, SIGABRT)
+    instead of reporting an error, and that must be exit 2 naming the file, never a crash."""
+    import os
+    import signal
+    import subprocess
+
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if os.environ.get("CAMBRIAN_COMPARE_CHILD") == "1" or "-h" in argv or "--help" in argv:
+        return compare_main(argv)
+    env = dict(os.environ, CAMBRIAN_COMPARE_CHILD="1")
+    code = subprocess.run([sys.executable, os.path.abspath(__file__), *argv], env=env).returncode
+    if code >= 0:
+        return code
+    # the child crashed: find which file does it, each in a child of its own
+    crash = signal.Signals(-code).name
+    paths = [a for a in argv if not a.startswith("-")][:2]
+    for path in paths:
+        probe = subprocess.run([sys.executable, "-c",
+                                "import sys; sys.path.insert(0, sys.argv[1]); import compare_histories as c; "
+                                "sys.exit(1 if c.unreadable(sys.argv[2]) else 0)",
+                                os.path.dirname(os.path.abspath(__file__)), path],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        if probe.returncode != 0:
+            print(f"compare_histories.py: {path}: cannot read (reading it crashed HDF5, {crash}: "
+                  "a damaged file)", file=sys.stderr)
+            return 2
+    print(f"compare_histories.py: cannot read {' or '.join(paths)}: reading crashed HDF5 ({crash})",
+          file=sys.stderr)
+    return 2
+
+
+def compare_main(argv):
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("a", help="first history.h5")

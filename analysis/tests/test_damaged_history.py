@@ -59,17 +59,17 @@ def test_a_bad_object_header_fails_at_once_naming_the_file(run_history, tmp_path
 
 
 def test_random_damage_never_hangs_a_reader(run_history, tmp_path):
-    # every reader ends within the limit (subprocess.run raises TimeoutExpired otherwise). Known
-    # and open: on some files h5py itself crashes inside HDF5 (SIGSEGV, SIGABRT) rather than
-    # raising, so a signal is an ending here too; a clean failure names the file
-    for seed in range(1, 9):
+    # every reader ends within the limit (subprocess.run raises TimeoutExpired otherwise), and
+    # never by a signal: HDF5 1.10 crashes (SIGSEGV, SIGABRT) on some of these files, in the
+    # child process that does the reading, and the reader says so naming the file
+    for seed in range(1, 13):
         bad = flipped(run_history, tmp_path / f"flipped{seed}.h5", seed)
         done = run("lineage.py", bad, "--output", tmp_path / "lineage.png")
-        assert done.returncode in (0, ch.EXIT_INPUT) or done.returncode < 0, done.stderr
+        assert done.returncode in (0, ch.EXIT_INPUT), (seed, done.returncode, done.stderr)
         if done.returncode == ch.EXIT_INPUT:
             assert str(bad) in done.stderr
         compared = run("compare_histories.py", run_history, bad, "--quiet")
-        assert compared.returncode in (1, 2) or compared.returncode < 0, compared.stderr
+        assert compared.returncode in (1, 2), (seed, compared.returncode, compared.stderr)
         if compared.returncode == 2:
             assert str(bad) in compared.stderr
 
