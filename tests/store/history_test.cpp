@@ -666,11 +666,11 @@ TEST(History, RowsOfAnAppendCutShortAreNotRead) {
   // individuals written, the generation row not: the generation is not in the history yet
   std::string half = tempPath("torn_half.h5");
   {
-    HistoryWriter writer(half, makeAttributes(), kMeasures);
-    writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
+    HistoryWriter half_writer(half, makeAttributes(), kMeasures);
+    half_writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
     GenerationRecord unfinished = makeGeneration(1);
     unfinished.generation = 0;  // what a zero-filled row reads as
-    writer.appendGeneration(makeRows(1, 5), unfinished);
+    half_writer.appendGeneration(makeRows(1, 5), unfinished);
   }
   HistoryReader reader(half);
   EXPECT_EQ(reader.generations().size(), 1u);
