@@ -1,6 +1,8 @@
 """Tests of analysis/scaling.py: Amdahl, Gustafson and Karp–Flatt on synthetic curves with a
 known serial fraction, the grouping of repeats, and the fixture sweep (1 and 2 workers)."""
 
+import os
+
 import numpy as np
 import pytest
 
@@ -80,7 +82,9 @@ def test_fixture_sweep(sweep_dir):
     for r in rows:
         assert r["time_median"] > 0 and 0.0 <= r["rank0_share"] < 1.0 and r["population"] > 0
         # rank 0 waits asleep while the workers evaluate: CPU well under its wall time
-        assert 0.0 < r["rank0_cpu_share"] < 0.5
+        # (a property of the optimised build: under the sanitizers their own work is most of it)
+        if os.environ.get("CAMBRIAN_SANITIZED", "OFF") in ("", "0", "OFF"):
+            assert 0.0 < r["rank0_cpu_share"] < 0.5
         assert r["generations"] == r["repeats"] * (runs[0]["generations"])
 
 

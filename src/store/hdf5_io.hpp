@@ -49,7 +49,8 @@ std::string systemReason();
 /// string attribute). Past the bound the process writes "PATH: ..." to stderr and exits with
 /// `code`, since a reader that never returns is worse than one that stops. A healthy header
 /// reads in milliseconds. One bound at a time: a nested one does nothing. The environment
-/// variable CAMBRIAN_HEADER_READ_SECONDS replaces `seconds` (tests).
+/// variable CAMBRIAN_HEADER_READ_SECONDS replaces `seconds` (tests); 0 turns the bound off (the
+/// fuzz targets: libFuzzer owns SIGALRM and bounds each input itself).
 class HeaderReadBound {
  public:
   HeaderReadBound(const std::string& path, int code, unsigned seconds = 20);
