@@ -99,6 +99,17 @@ po::variables_map parseOptions(int argc, const char* const* argv,
     po::store(parser.run(), vm);
     po::notify(vm);
   } catch (const po::error& e) {
+    // Boost fills the placeholders of its message (%original_token% and the like) until none is
+    // left: a token holding one itself would never end (found by fuzzing), so it is not asked
+    for (int i = 1; i < argc; ++i) {
+      std::string argument = argv[i];
+      for (const char* placeholder :
+           {"%canonical_option%", "%option%", "%value%", "%original_token%", "%prefix%"}) {
+        if (argument.find(placeholder) != std::string::npos)
+          throw Error(ExitCode::usage, "command line: '" + argument +
+                                           "' is not an option or value cambrian understands");
+      }
+    }
     throw Error(ExitCode::usage, e.what());
   }
   std::set<std::string> command_line;

@@ -75,6 +75,26 @@ TEST(OptionsMarkdown, RunOnlyKeysAreMarked) {
 }
 
 // command line and file: the command line wins, origins are recorded, errors name the source
+TEST(ParseOptions, ATokenHoldingAParserPlaceholderIsRefusedNotLoopedOn) {
+  // Boost's message would replace %original_token% by the token, which holds it again, forever
+  // (found by fuzzing the command line)
+  po::options_description cli;
+  cli.add_options()("config", po::value<std::string>());
+  for (const char* token : {"--foo%original_token%", "-a%original_token%", "--x%value%%option%"}) {
+    Creature c;
+    const char* argv[] = {"x", token};
+    try {
+      parseOptions(2, argv, cli, c.schema, nullptr, "config");
+      ADD_FAILURE() << token << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::usage);
+      EXPECT_NE(std::string(e.what()).find(std::string("'") + token + "' is not an option"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(ParseOptions, CommandLineWinsOverTheFileAndErrorsNameTheirSource) {
   std::string path = testing::TempDir() + "/cambrian_options_test.ini";
   std::ofstream(path) << "[physics]\ntime_step = 0.01\ngravity = 3\n[task]\nname = jump\n";
