@@ -64,9 +64,9 @@ def _bound_read_attempts(fapl):
 
 
 def _seconds_to_read_header():
-    """The bound on the probe's time (CAMBRIAN_HEADER_READ_SECONDS, as the C++ readers)."""
+    """The bound on the probe's time (CAMBRIAN_READ_SECONDS, as the C++ readers)."""
     try:
-        return max(1, int(os.environ.get("CAMBRIAN_HEADER_READ_SECONDS", "20")))
+        return max(1, int(os.environ.get("CAMBRIAN_READ_SECONDS", "20")))
     except ValueError:
         return 20
 
@@ -216,7 +216,7 @@ class History:
     HDF5 is called in a child process that this object starts and talks to: on some damaged
     files HDF5 1.10 crashes (SIGSEGV, SIGABRT) or loops without end instead of reporting an
     error, and that must end the child, never the analysis. Such a file is a HistoryError naming
-    it; the header's reading is bounded (CAMBRIAN_HEADER_READ_SECONDS, default 20 s)."""
+    it; the header's reading is bounded (CAMBRIAN_READ_SECONDS, default 20 s)."""
 
     def __init__(self, path):
         import subprocess

@@ -79,7 +79,7 @@ def test_a_file_that_sends_hdf5_into_an_endless_loop_ends_within_the_bound(tmp_p
     # the header is read first in a child process with a time bound
     looping = os.path.join(os.path.dirname(ANALYSIS), "tests", "store", "data",
                            "history_hdf5_endless_loop.h5")
-    env = dict(os.environ, MPLBACKEND="Agg", CAMBRIAN_HEADER_READ_SECONDS="2")
+    env = dict(os.environ, MPLBACKEND="Agg", CAMBRIAN_READ_SECONDS="2")
     for script, arguments in (("lineage.py", [looping, "--output", tmp_path / "l.png"]),
                               ("compare_histories.py", [looping, looping])):
         done = subprocess.run([sys.executable, os.path.join(ANALYSIS, script), *map(str, arguments)],

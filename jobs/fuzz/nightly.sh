@@ -38,8 +38,8 @@ fuzz() {
 }
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$source_dir/tests/sanitizers/lsan.supp}
-# libFuzzer owns SIGALRM: cambrian's header bound off; libhdf5's own errors on damaged files
-export CAMBRIAN_HEADER_READ_SECONDS=0
+# the readers read in this process (no child first); libhdf5's own errors on damaged files
+export CAMBRIAN_READ_SECONDS=0
 export ASAN_OPTIONS="$ASAN_OPTIONS:suppressions=$source_dir/tests/sanitizers/asan.supp"
 for target in "${targets[@]}"; do
   while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done

@@ -9,6 +9,7 @@
 #include "core/outcome_bytes.hpp"
 #include "store/hdf5_io.hpp"
 #include "store/history.hpp"
+#include "store/read_in_child.hpp"
 
 #include <hdf5.h>
 
@@ -386,13 +387,18 @@ void writeCheckpoint(const std::string& dir, const CheckpointState& state,
 }
 
 CheckpointState readCheckpoint(const std::string& path) {
+  // libhdf5's faults on a damaged file end a child, not this process
+  readInChildFirst(path, ExitCode::checkpoint, [&] { readCheckpointHere(path); });
+  return readCheckpointHere(path);
+}
+
+CheckpointState readCheckpointHere(const std::string& path) {
   QuietErrors quiet;
   auto fail = [&](const std::string& what) {
     throw Error(ExitCode::checkpoint, path + ": " + what);
   };
 
   // missing, not HDF5, truncated or corrupt
-  std::optional<HeaderReadBound> bound(std::in_place, path, static_cast<int>(ExitCode::checkpoint));
   std::string problem;
   Handle file = openFile(path, "checkpoint", false, problem);
   if (!file.valid())
@@ -425,7 +431,6 @@ CheckpointState readCheckpoint(const std::string& path) {
          " does not follow generation " + std::to_string(generation) + " (corrupt checkpoint)");
 
   readString(f, "config_hash", state.config_hash);
-  bound.reset();
 
   // the population, checked against the state hash (version 1: its own columns)
   Handle group(H5Gopen2(f, "population", H5P_DEFAULT), H5Gclose);

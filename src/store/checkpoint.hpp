@@ -59,6 +59,8 @@ void writeCheckpoint(const std::string& dir, const CheckpointState& state,
 /// when it is missing, not HDF5, truncated, corrupt (state hash mismatch), foreign (format
 /// attribute) or of a newer format version.
 CheckpointState readCheckpoint(const std::string& path);
+/// readCheckpoint without the child process that meets libhdf5's faults first (the fuzz target).
+CheckpointState readCheckpointHere(const std::string& path);
 
 /// The checkpoint a run in DIR continues from: nullopt when DIR holds none and none is expected
 /// (a fresh run). Throws Error(checkpoint) naming the file when checkpoint.h5 is unreadable, or

@@ -30,55 +30,6 @@ herr_t Handle::reset() {
   return status;
 }
 
-namespace {
-
-// what the bound says and its exit code, prepared before it is armed (the handler may only
-// write and exit)
-char bound_message[1200];
-std::size_t bound_message_size = 0;
-int bound_code = 0;
-bool bound_armed = false;
-struct sigaction bound_previous {};
-
-void onHeaderReadBound(int) {
-  [[maybe_unused]] ssize_t n = ::write(STDERR_FILENO, bound_message, bound_message_size);
-  ::_exit(bound_code);
-}
-
-}  // namespace
-
-HeaderReadBound::HeaderReadBound(const std::string& path, int code, unsigned seconds) {
-  if (bound_armed)
-    return;
-  // tests shorten it, and the fuzz targets (whose fuzzer owns SIGALRM) turn it off with 0
-  if (const char* text = std::getenv("CAMBRIAN_HEADER_READ_SECONDS"); text && *text) {
-    int value = std::atoi(text);
-    if (value <= 0)
-      return;
-    seconds = static_cast<unsigned>(value);
-  }
-  std::string message = "cambrian: " + path + ": reading the file's header did not end in " +
-                        std::to_string(seconds) +
-                        " s: a damaged file that sends HDF5 into an endless loop\n";
-  bound_message_size = std::min(message.size(), sizeof bound_message);
-  std::memcpy(bound_message, message.data(), bound_message_size);
-  bound_code = code;
-  struct sigaction action {};
-  action.sa_handler = onHeaderReadBound;
-  sigemptyset(&action.sa_mask);
-  ::sigaction(SIGALRM, &action, &bound_previous);
-  ::alarm(seconds);
-  bound_armed = armed_ = true;
-}
-
-HeaderReadBound::~HeaderReadBound() {
-  if (!armed_)
-    return;
-  ::alarm(0);
-  ::sigaction(SIGALRM, &bound_previous, nullptr);
-  bound_armed = false;
-}
-
 std::string systemReason() {
   // the innermost message that quotes the system's ("..., errno = 28, error message = '...'")
   std::string reason;

@@ -44,24 +44,6 @@ class Handle {
 /// failure was not the system's. Call before the next HDF5 call clears the stack.
 std::string systemReason();
 
-/// A bound on reading a file's header (opening it, its format and root attributes): a damaged
-/// file can send HDF5 1.10 into an endless loop there (found by fuzzing: H5HG_read, reading a
-/// string attribute). Past the bound the process writes "PATH: ..." to stderr and exits with
-/// `code`, since a reader that never returns is worse than one that stops. A healthy header
-/// reads in milliseconds. One bound at a time: a nested one does nothing. The environment
-/// variable CAMBRIAN_HEADER_READ_SECONDS replaces `seconds` (tests); 0 turns the bound off (the
-/// fuzz targets: libFuzzer owns SIGALRM and bounds each input itself).
-class HeaderReadBound {
- public:
-  HeaderReadBound(const std::string& path, int code, unsigned seconds = 20);
-  ~HeaderReadBound();
-  HeaderReadBound(const HeaderReadBound&) = delete;
-  HeaderReadBound& operator=(const HeaderReadBound&) = delete;
-
- private:
-  bool armed_ = false;
-};
-
 /// Silences HDF5's error stack printing for the lifetime of the object (errors become ours).
 class QuietErrors {
  public:

@@ -7,6 +7,7 @@
 #include "core/hash.hpp"
 #include "store/hdf5_io.hpp"
 #include "store/held_file.hpp"
+#include "store/read_in_child.hpp"
 
 #include <hdf5.h>
 
@@ -687,11 +688,23 @@ struct HistoryReader::Impl {
   Handle file;
 };
 
-HistoryReader::HistoryReader(const std::string& path)
+HistoryReader::HistoryReader(const std::string& path, HistoryReadMode mode)
     : path_(path), impl_(std::make_unique<Impl>()) {
+  // libhdf5's faults on a damaged file end a child that reads all of it, not this process
+  if (mode == HistoryReadMode::child_first) {
+    try {
+      readInChildFirst(path_, ExitCode::input_file, [&] {
+        HistoryReader whole(path_, HistoryReadMode::this_process_only);
+        whole.measures();
+        whole.individuals();
+        whole.generations();
+      });
+    } catch (const Error& e) {
+      throw InputError(e.what());
+    }
+  }
   QuietErrors quiet;
   auto fail = [&](const std::string& what) { throw InputError(path_ + ": " + what); };
-  HeaderReadBound bound(path_, static_cast<int>(ExitCode::input_file));
 
   // missing, not HDF5, truncated or corrupt (a file still being written opens for SWMR reading)
   std::string problem;

@@ -114,13 +114,19 @@ std::unique_ptr<HistoryWriter> resumeHistory(const std::string& path, std::uint6
 /// smallest multiple of it of at least 64 rows (population 300: 300; 12: 72).
 std::uint64_t historyChunkRows(std::uint64_t population);
 
+/// How a HistoryReader treats libhdf5's own faults on a damaged file: `child_first` reads the
+/// whole file in a child process first (a crash or endless loop there is an InputError naming the
+/// file); `this_process_only` skips that (the fuzz target, the child itself).
+enum class HistoryReadMode { child_first, this_process_only };
+
 /// Reads a history file, complete or still being written (opened for SWMR reading). Rows are
 /// those every column holds. A missing, truncated, corrupt, non-HDF5 or foreign file throws
 /// InputError naming the file and what is wrong.
 class HistoryReader {
  public:
   /// Opens and checks `path` (format attribute, version, groups).
-  explicit HistoryReader(const std::string& path);
+  explicit HistoryReader(const std::string& path,
+                         HistoryReadMode mode = HistoryReadMode::child_first);
   ~HistoryReader();
   HistoryReader(const HistoryReader&) = delete;
   HistoryReader& operator=(const HistoryReader&) = delete;

@@ -1,5 +1,6 @@
 // Fuzz target: checkpoint files (damaged checkpoint.h5), read by readCheckpoint as a resumed run
-// reads them. A file refused ends in cambrian::Error (the checkpoint exit code).
+// reads them, in this process (readCheckpointHere: the fuzzer looks for faults in cambrian's own
+// reading). A file refused ends in cambrian::Error (the checkpoint exit code).
 #include "cambrian/error.hpp"
 
 #include "fuzz/fuzz_file.hpp"
@@ -12,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static cambrian::fuzz::FuzzFile file("checkpoint.h5");
   const std::string& path = file.write(data, size);
   try {
-    cambrian::readCheckpoint(path);
+    cambrian::readCheckpointHere(path);
   } catch (const cambrian::Error&) {
   }
   return 0;
