@@ -32,7 +32,7 @@ if [ "$status" -ne 0 ] && [ -n "$known_library" ]; then
       print; exit
     }' "$work/log")
   if [[ "$innermost" == *"$known_library"* ]]; then
-    kind=$(grep -o -m1 -E "ERROR: [A-Za-z]+: [a-z-]+" "$work/log" || true)
+    kind=$(grep -o -m1 -E "ERROR: [A-Za-z]+: [A-Za-z-]+" "$work/log" || true)
     echo "fuzz_check: $kind inside $known_library (innermost frame: ${innermost#"${innermost%%[! ]*}"})"
     echo "fuzz_check: a known fault of that library on damaged input" \
       "(docs/fuzzing-and-sanitizers.md), not a cambrian failure; fuzzing stopped there"
