@@ -379,8 +379,9 @@ INI
     job "$np" --config "$work/run.ini" --out "$work/replaced" > "$work/replaced.txt"
     same straight replaced
     # read-only: root writes anyway, so this part runs as nobody (skipped where that is impossible)
-    if [ "$(id -u)" -eq 0 ] && command -v setpriv > /dev/null && id nobody > /dev/null 2>&1; then
-      as_user=(setpriv --reuid=nobody --regid=nogroup --clear-groups)
+    as_user=(setpriv --reuid=nobody --regid=nogroup --clear-groups)
+    if [ "$(id -u)" -eq 0 ] && command -v setpriv > /dev/null && id nobody > /dev/null 2>&1 &&
+      "${as_user[@]}" test -x "$cambrian"; then
       mkdir -p "$work/readonly"
       chown nobody "$work/readonly"
       chmod o+rx "$work" "$work/run.ini"
@@ -402,7 +403,8 @@ INI
       job "$np" --config "$work/run.ini" --out "$work/readonly" > "$work/readonly.txt"
       same straight readonly
     else
-      echo "the read-only directory part needs root (to act as nobody): skipped"
+      echo "the read-only directory part needs root and a cambrian that nobody may run" \
+        "(a build folder under a private directory is not): skipped"
     fi
     ;;
   disk_full)
