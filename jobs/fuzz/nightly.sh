@@ -3,8 +3,9 @@
 # FUZZ_JOBS targets at a time (default 1), each in libFuzzer's fork mode so that it goes on
 # after a crash. Builds preset asan first. Grows a corpus per target in OUT/corpus/ (the
 # repository's corpus is only read), saves every crash, leak, timeout and out-of-memory input in
-# OUT/crashes/TARGET/, prints each target's executions and findings, and says how to turn a
-# finding into a regression test. Exits 1 when anything was found.
+# OUT/crashes/TARGET/, prints each target's executions and findings (those in libhdf5 apart), and
+# says how to turn a finding into a regression test. Exits 1 when anything outside a known
+# faulty library was found.
 # usage: FUZZ_SECONDS=3600 FUZZ_JOBS=2 bash jobs/fuzz/nightly.sh [OUT] [TARGET...]
 #   OUT defaults to build/fuzz-nightly; TARGETs (genome_bytes, history, ...) default to all
 set -euo pipefail
@@ -48,19 +49,36 @@ for target in "${targets[@]}"; do
 done
 wait
 
-# what each target did and found
+# what each target did and found; a finding whose fault lies in the target's known faulty
+# library (libhdf5 for the HDF5 readers: tests/fuzz/CMakeLists.txt) is counted apart: cambrian's
+# readers meet those in a child process (docs/fuzzing-and-sanitizers.md)
 found=0
-printf '%-16s %14s %8s\n' target executions findings
+printf '%-16s %14s %8s %12s\n' target executions findings "in library"
 for target in "${targets[@]}"; do
   execs=$(grep -o '^#[0-9]*' "$out/$target.log" | tail -n 1 | tr -d '#')
-  crashes=$(find "$out/crashes/$target" -maxdepth 1 -type f \
-    \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l)
-  printf '%-16s %14s %8s\n' "$target" "${execs:-?}" "$crashes"
-  found=$((found + crashes))
+  library=$(sed -n "s/^cambrian_fuzz_target($target .*KNOWN_FAULTY_LIBRARY \([a-z0-9_]*\)).*/\1/p" \
+    tests/fuzz/CMakeLists.txt)
+  crashes=0 in_library=0
+  while IFS= read -r -d '' finding; do
+    crashes=$((crashes + 1))
+    [ -n "$library" ] || continue
+    # replay it once to see where it fails
+    "$source_dir/build/asan/tests/fuzz/fuzz_$target" -timeout=10 -rss_limit_mb=2048 "$finding" \
+      > "$finding.replay.txt" 2>&1 || true
+    if bash tests/fuzz/library_fault.sh "$finding.replay.txt" "$library" > /dev/null; then
+      in_library=$((in_library + 1))
+    fi
+  done < <(find "$out/crashes/$target" -maxdepth 1 -type f \
+    \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) \
+    ! -name '*.replay.txt' -print0)
+  printf '%-16s %14s %8s %12s\n' "$target" "${execs:-?}" "$crashes" "$in_library"
+  found=$((found + crashes - in_library))
 done
 if [ "$found" -gt 0 ]; then
   cat <<TEXT
-nightly: $found finding(s) in $out/crashes/TARGET/. For each:
+nightly: $found finding(s) outside the known faulty libraries in $out/crashes/TARGET/
+(for a target with a known faulty library, FILE.replay.txt beside each finding holds its stack).
+For each:
   1. reproduce: build/asan/tests/fuzz/fuzz_TARGET FILE (prints the report and the stack)
   2. fix the cause in src/, and add a unit test in tests/<module>/ with the input's essence
   3. copy FILE to tests/fuzz/corpus/TARGET/ (named for what it breaks), so that every CI run
@@ -68,4 +86,4 @@ nightly: $found finding(s) in $out/crashes/TARGET/. For each:
 TEXT
   exit 1
 fi
-echo "nightly: nothing found ($out)"
+echo "nightly: nothing found outside the known faulty libraries ($out)"

@@ -22,21 +22,12 @@ here=$(cd "$(dirname "$0")" && pwd)
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}suppressions=$here/../sanitizers/asan.supp"
 "$binary" -seed=1 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
   -artifact_prefix="$work/artifacts/" "$work/new" "$corpus" 2>&1 | tee "$work/log" || status=$?
-if [ "$status" -ne 0 ] && [ -n "$known_library" ]; then
-  # the first stack after the report, its innermost frame that is not the C library's, the
-  # sanitizer's or the fuzzer's
-  innermost=$(awk '/ERROR: (libFuzzer|AddressSanitizer|UndefinedBehaviorSanitizer)/ {seen = 1; next}
-    seen && /^ *#[0-9]+ 0x/ {
-      if ($0 ~ /libc\.so|sysdeps\/|libc_start|__sanitizer_|__interceptor_|__asan|__ubsan|fuzzer::/)
-        next
-      print; exit
-    }' "$work/log")
-  if [[ "$innermost" == *"$known_library"* ]]; then
-    kind=$(grep -o -m1 -E "ERROR: [A-Za-z]+: [A-Za-z-]+" "$work/log" || true)
-    echo "fuzz_check: $kind inside $known_library (innermost frame: ${innermost#"${innermost%%[! ]*}"})"
-    echo "fuzz_check: a known fault of that library on damaged input" \
-      "(docs/fuzzing-and-sanitizers.md), not a cambrian failure; fuzzing stopped there"
-    exit 0
-  fi
+if [ "$status" -ne 0 ] && [ -n "$known_library" ] &&
+  innermost=$(bash "$here/library_fault.sh" "$work/log" "$known_library"); then
+  kind=$(grep -o -m1 -E "ERROR: [A-Za-z]+: [A-Za-z-]+" "$work/log" || true)
+  echo "fuzz_check: $kind inside $known_library (innermost frame: $innermost)"
+  echo "fuzz_check: a known fault of that library on damaged input" \
+    "(docs/fuzzing-and-sanitizers.md), not a cambrian failure; fuzzing stopped there"
+  exit 0
 fi
 exit "$status"

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Tells whether the first fault a fuzzer or sanitizer log reports (a timeout, a crash, a
+# sanitizer error) lies in a given library: its innermost stack frame outside the C library and
+# the sanitizer and fuzzer runtime is in LIBRARY. Prints that frame; exits 0 when it is in
+# LIBRARY, 1 when it is elsewhere (cambrian's own code, most likely) or the log has no fault.
+# usage: library_fault.sh LOG LIBRARY
+set -euo pipefail
+log=$1 library=$2
+innermost=$(awk '/ERROR: (libFuzzer|AddressSanitizer|UndefinedBehaviorSanitizer|LeakSanitizer)/ {
+    seen = 1; next }
+  seen && /^ *#[0-9]+ 0x/ {
+    if ($0 ~ /libc\.so|sysdeps\/|libc_start|__sanitizer_|__interceptor_|__asan|__ubsan|__lsan|fuzzer::/)
+      next
+    sub(/^ +/, ""); print; exit
+  }' "$log")
+echo "${innermost:-no fault in $log}"
+[ -n "$innermost" ] && [[ "$innermost" == *"$library"* ]]
