@@ -51,28 +51,32 @@ wait
 
 # what each target did and found; a finding whose fault lies in the target's known faulty
 # library (libhdf5 for the HDF5 readers: tests/fuzz/CMakeLists.txt) is counted apart: cambrian's
-# readers meet those in a child process (docs/fuzzing-and-sanitizers.md)
+# readers meet those in a child process (docs/fuzzing-and-sanitizers.md); so is one that does
+# not fail again when replayed alone
 found=0
-printf '%-16s %14s %8s %12s\n' target executions findings "in library"
+printf '%-16s %14s %8s %12s %16s\n' target executions findings "in library" "not reproduced"
 for target in "${targets[@]}"; do
   execs=$(grep -o '^#[0-9]*' "$out/$target.log" | tail -n 1 | tr -d '#')
   library=$(sed -n "s/^cambrian_fuzz_target($target .*KNOWN_FAULTY_LIBRARY \([a-z0-9_]*\)).*/\1/p" \
     tests/fuzz/CMakeLists.txt)
-  crashes=0 in_library=0
+  crashes=0 in_library=0 not_reproduced=0
   while IFS= read -r -d '' finding; do
     crashes=$((crashes + 1))
     [ -n "$library" ] || continue
-    # replay it once to see where it fails
-    "$source_dir/build/asan/tests/fuzz/fuzz_$target" -timeout=10 -rss_limit_mb=2048 "$finding" \
-      > "$finding.replay.txt" 2>&1 || true
-    if bash tests/fuzz/library_fault.sh "$finding.replay.txt" "$library" > /dev/null; then
+    # replay it once to see where it fails (fork mode also saves inputs that fail only in
+    # their job's context, such as an empty one after a job's endless loop)
+    if "$source_dir/build/asan/tests/fuzz/fuzz_$target" -timeout=10 -rss_limit_mb=2048 \
+      "$finding" > "$finding.replay.txt" 2>&1; then
+      not_reproduced=$((not_reproduced + 1))
+    elif bash tests/fuzz/library_fault.sh "$finding.replay.txt" "$library" > /dev/null; then
       in_library=$((in_library + 1))
     fi
   done < <(find "$out/crashes/$target" -maxdepth 1 -type f \
     \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) \
     ! -name '*.replay.txt' -print0)
-  printf '%-16s %14s %8s %12s\n' "$target" "${execs:-?}" "$crashes" "$in_library"
-  found=$((found + crashes - in_library))
+  printf '%-16s %14s %8s %12s %16s\n' "$target" "${execs:-?}" "$crashes" "$in_library" \
+    "$not_reproduced"
+  found=$((found + crashes - in_library - not_reproduced))
 done
 if [ "$found" -gt 0 ]; then
   cat <<TEXT
