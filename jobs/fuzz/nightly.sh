@@ -65,8 +65,9 @@ for target in "${targets[@]}"; do
     [ -n "$library" ] || continue
     # replay it once to see where it fails (fork mode also saves inputs that fail only in
     # their job's context, such as an empty one after a job's endless loop)
+    # (a malloc limit, so that an out-of-memory input shows the stack of its large allocation)
     if "$source_dir/build/asan/tests/fuzz/fuzz_$target" -timeout=10 -rss_limit_mb=2048 \
-      "$finding" > "$finding.replay.txt" 2>&1; then
+      -malloc_limit_mb=512 "$finding" > "$finding.replay.txt" 2>&1; then
       not_reproduced=$((not_reproduced + 1))
     elif bash tests/fuzz/library_fault.sh "$finding.replay.txt" "$library" > /dev/null; then
       in_library=$((in_library + 1))

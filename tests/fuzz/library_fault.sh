@@ -6,13 +6,13 @@
 # usage: library_fault.sh LOG LIBRARY
 set -euo pipefail
 log=$1 library=$2
-innermost=$(awk '/ERROR: (libFuzzer|AddressSanitizer|UndefinedBehaviorSanitizer|LeakSanitizer)/ {
+innermost=$(awk '/ERROR: (libFuzzer|AddressSanitizer|UndefinedBehaviorSanitizer|LeakSanitizer)|Sanitizer: CHECK failed/ {
     seen = 1; next }
   seen && /^ *#[0-9]+ 0x/ {
-    if ($0 ~ /libc\.so|sysdeps\/|libc_start|__sanitizer_|__interceptor_|__asan|__ubsan|__lsan|fuzzer::/)
+    if ($0 ~ /libc\.so|sysdeps\/|libc_start|__sanitizer|__interceptor_|__asan|__ubsan|__lsan|fuzzer::/)
       next
     # the allocator, for the allocation stack of a leak
-    if ($0 ~ / in (malloc|calloc|realloc|aligned_alloc|posix_memalign|operator new)/)
+    if ($0 ~ / in (malloc|calloc|realloc|free|aligned_alloc|posix_memalign|operator new|operator delete)/)
       next
     sub(/^ +/, ""); print; exit
   }' "$log")
