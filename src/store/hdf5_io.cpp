@@ -1,12 +1,7 @@
 #include "store/hdf5_io.hpp"
 
-#include <algorithm>
-#include <csignal>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <system_error>
-#include <unistd.h>
 
 namespace cambrian::hdf5 {
 
