@@ -1,12 +1,14 @@
 // cambrian: the environment a creature is evaluated in, described apart from the creature — the
-// ground, free objects (a projectile, a cube to push) and the light the photosensors point at.
-// Environment kinds (plane now; hills, water later) build it; tasks add the objects they need.
+// ground, gravity, the fluid around it, free objects (a projectile, a cube to push) and the light
+// the photosensors point at. Environment kinds (plane, water) build it; tasks add the objects
+// they need and may move the light.
 #pragma once
 
 #include "cambrian/body_plan.hpp"
 #include "cambrian/math.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,10 +16,20 @@ namespace cambrian {
 
 /// The ground the creature stands on.
 struct Ground {
-  enum class Kind : std::uint8_t { plane };  ///< a flat plane at z = 0
+  enum class Kind : std::uint8_t {
+    plane,  ///< a flat plane at z = 0
+    none,   ///< nothing to stand on (water)
+  };
   Kind kind = Kind::plane;
   double friction = 1.0;
   double restitution = 0.0;
+};
+
+/// The medium around the creature: Sims' viscous water, or nothing (air, not modelled).
+struct Fluid {
+  /// N s / m^3: each face of a part (and of a free object) feels a force against the normal
+  /// component of its velocity, viscosity x its area x that speed (Sims 1994); 0: no fluid.
+  double viscosity = 0;
 };
 
 /// A rigid object of the environment that is not part of the creature.
@@ -33,6 +45,9 @@ struct FreeObject {
 /// Everything around the creature.
 struct Environment {
   Ground ground;
+  /// m / s^2 downwards (-z), after buoyancy; unset: physics.gravity
+  std::optional<double> gravity;
+  Fluid fluid;
   std::vector<FreeObject> objects;
   Vec3 light{10, 0, 0};  ///< the point the photosensors point at, m
 };

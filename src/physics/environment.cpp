@@ -1,6 +1,8 @@
 // cambrian: the registered environment kinds — one line each — and the plane.
 #include "physics/environment.hpp"
 
+#include "physics/water_environment.hpp"
+
 namespace cambrian {
 
 std::unique_ptr<EnvironmentKind> PlaneEnvironment::clone() const {
@@ -17,8 +19,10 @@ Environment PlaneEnvironment::build(const PhysicsSettings& physics) const {
 
 const std::vector<const EnvironmentKind*>& environmentKinds() {
   static const PlaneEnvironment plane;
+  static const WaterEnvironment water;
   static const std::vector<const EnvironmentKind*> registered = {
       &plane,  // a flat ground
+      &water,  // Sims' viscous water without gravity
   };
   return registered;
 }

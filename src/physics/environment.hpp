@@ -1,4 +1,4 @@
-// cambrian: environment kinds as plug-ins (plane now; hills and water later), chosen by
+// cambrian: environment kinds as plug-ins (plane, water; hills later), chosen by
 // environment.name; each builds the Environment (cambrian/environment.hpp) an evaluation runs
 // in. Tasks add the objects they need (Task::prepare) and read them back from the world.
 #pragma once
@@ -29,8 +29,8 @@ class EnvironmentKind {
   virtual Environment build(const PhysicsSettings& physics) const = 0;
 };
 
-/// A flat, infinite ground plane (physics.ground_friction, physics.restitution), nothing on it,
-/// the light 10 m ahead along +x.
+/// A flat, infinite ground plane (physics.ground_friction, physics.restitution) under
+/// physics.gravity, nothing on it, no fluid, the light 10 m ahead along +x.
 class PlaneEnvironment : public EnvironmentKind {
  public:
   std::unique_ptr<EnvironmentKind> clone() const override;

@@ -451,7 +451,10 @@ struct FeatherstoneObjects {
   std::vector<std::unique_ptr<btDefaultMotionState>> object_states;
   std::vector<std::unique_ptr<btRigidBody>> objects;  // Environment::objects order
   bool self_contacts = true;  // parts touch each other (always at the birth check)
-  mutable btAlignedObjectArray<btVector3> omega, velocity;  // mechanicalEnergy's scratch
+  bool has_ground = false;    // the ground plane is in the world
+  mutable btAlignedObjectArray<btVector3> omega, velocity;  // link velocities' scratch
+  btAlignedObjectArray<btQuaternion> world_to_local;        // collider updates' scratch
+  btAlignedObjectArray<btVector3> local_origin;
 
   ~FeatherstoneObjects() {
     for (auto& object : objects)
@@ -467,7 +470,8 @@ struct FeatherstoneObjects {
       world.removeCollisionObject(collider.get());
     if (body)
       world.removeMultiBody(body.get());
-    world.removeCollisionObject(&ground);
+    if (has_ground)
+      world.removeCollisionObject(&ground);
   }
 };
 
@@ -526,10 +530,11 @@ void FeatherstoneWorld::build(double birth_height) {
     return;
   }
 
-  // world: gravity, fixed-step solver settings, ground plane
+  // world: the environment's gravity, fixed-step solver settings, ground plane (if any)
   if (physics_.ground_contact_corners)
     b.configuration.setPlaneConvexMultipointIterations();
-  b.world.setGravity(btVector3(0, 0, -physics_.gravity));
+  gravity_ = environment_.gravity.value_or(physics_.gravity);
+  b.world.setGravity(btVector3(0, 0, -gravity_));
   btContactSolverInfo& solver = b.world.getSolverInfo();
   solver.m_numIterations = physics_.solver_iterations;
   solver.m_leastSquaresResidualThreshold = physics_.solver_tolerance * physics_.solver_tolerance;
@@ -540,8 +545,11 @@ void FeatherstoneWorld::build(double birth_height) {
   b.ground.setRestitution(environment_.ground.restitution);
   b.ground.setUserIndex(kGroundIndex);
   anchorFriction(b.ground);
-  b.world.addCollisionObject(&b.ground, btBroadphaseProxy::StaticFilter,
-                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+  if (environment_.ground.kind == Ground::Kind::plane) {
+    b.world.addCollisionObject(&b.ground, btBroadphaseProxy::StaticFilter,
+                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    b.has_ground = true;
+  }
 
   // count Bullet links: a k-DoF joint is k links (k-1 virtual), fixed is one fixed link
   int link_count = 0;
@@ -573,7 +581,8 @@ void FeatherstoneWorld::build(double birth_height) {
   dof_link_.assign(part_count, {-1, -1, -1});
   virtual_link_part_.assign(link_count, -1);
   max_torque_.assign(part_count, 0);
-  std::vector<int> part_link(part_count, -1);  // Bullet link carrying each part's shape
+  part_link_.assign(part_count, -1);
+  std::vector<int>& part_link = part_link_;
   int next_link = 0;
   for (int i = 1; i < part_count; ++i) {
     const PartPlan& part = plan_.parts[i];
@@ -679,13 +688,29 @@ void FeatherstoneWorld::build(double birth_height) {
   }
 
   // collider transforms from the zero pose
-  btAlignedObjectArray<btQuaternion> world_to_local;
-  btAlignedObjectArray<btVector3> local_origin;
-  body.updateCollisionObjectWorldTransforms(world_to_local, local_origin);
+  body.updateCollisionObjectWorldTransforms(b.world_to_local, b.local_origin);
   contact_.assign(part_count, 0);
 
   // the environment's free objects, after the creature
   addObjects();
+
+  // the momentum kept to what the outside forces give, where they are all known
+  correct_momentum_ = physics_.momentum_correction &&
+                      environment_.ground.kind == Ground::Kind::none &&
+                      environment_.objects.empty();
+  total_mass_ = body.getBaseMass();
+  for (int link = 0; link < body.getNumLinks(); ++link)
+    total_mass_ += body.getLinkMass(link);
+  if (correct_momentum_)
+    correctMomentum(0);  // the centre and the momentum at birth
+
+  // the fluid's drag on every part and object (Sims' water)
+  if (environment_.fluid.viscosity > 0) {
+    for (const PartPlan& part : plan_.parts)
+      drag_.push_back(viscousDrag(part.shape, part.size, environment_.fluid.viscosity));
+    for (const FreeObject& object : environment_.objects)
+      drag_.push_back(viscousDrag(object.shape, object.size, environment_.fluid.viscosity));
+  }
 }
 
 void FeatherstoneWorld::addObjects() {
@@ -812,9 +837,148 @@ void FeatherstoneWorld::step(std::span<const double> commands) {
   const double substep = physics_.time_step / physics_.substeps;
   for (int k = 0; k < physics_.substeps; ++k) {
     applyTorques(commands, substep);
+    if (!drag_.empty())
+      applyDrag(substep);
     bullet_->world.stepSimulation(substep, 0);
+    if (correct_momentum_)
+      correctMomentum(substep);
     addEffectorWorkBound(commands, substep);
   }
+}
+
+void FeatherstoneWorld::applyDrag(double substep) {
+  // each part's velocities in its own frame (Bullet's link frames are the parts' frames, at their
+  // centres): the drag there, turned into the world frame Bullet's applied forces are in
+  FeatherstoneObjects& b = *bullet_;
+  btMultiBody& body = *b.body;
+  const int links = body.getNumLinks();
+  b.omega.resize(links + 1);
+  b.velocity.resize(links + 1);
+  body.compTreeLinkVelocities(&b.omega[0], &b.velocity[0]);
+  const std::size_t parts = plan_.parts.size();
+  drag_force_ = drag_torque_ = Vec3{};
+  for (std::size_t i = 0; i < parts; ++i) {
+    const int link = part_link_[i];
+    const bool base = link < 0;
+    const double mass = base ? body.getBaseMass() : body.getLinkMass(link);
+    const Vec3 inertia = fromBt(base ? body.getBaseInertia() : body.getLinkInertia(link));
+    const Wrench drag = dragOverStep(drag_[i], mass, inertia, fromBt(b.velocity[link + 1]),
+                                     fromBt(b.omega[link + 1]), substep);
+    const btTransform& frame = b.colliders[i]->getWorldTransform();
+    const btVector3 force = frame.getBasis() * toBt(drag.force);
+    const btVector3 torque = frame.getBasis() * toBt(drag.torque);
+    if (base) {
+      body.addBaseForce(force);
+      body.addBaseTorque(torque);
+    } else {
+      body.addLinkForce(link, force);
+      body.addLinkTorque(link, torque);
+    }
+    // the sum and its moment about the centre (what the momentum correction keeps to)
+    drag_force_ = drag_force_ + fromBt(force);
+    drag_torque_ = drag_torque_ + fromBt(torque + (frame.getOrigin() - toBt(centre_)).cross(force));
+  }
+  // the free objects: the same in their own frames (fixed ones do not move)
+  for (std::size_t k = 0; k < b.objects.size(); ++k) {
+    btRigidBody& object = *b.objects[k];
+    if (object.getInvMass() == 0)
+      continue;
+    const btMatrix3x3& basis = object.getWorldTransform().getBasis();
+    const btVector3 inverse_inertia = object.getInvInertiaDiagLocal();
+    auto invert = [](double value) { return value > 0 ? 1 / value : 0.0; };
+    const Vec3 inertia{invert(inverse_inertia.x()), invert(inverse_inertia.y()),
+                       invert(inverse_inertia.z())};
+    const Wrench drag =
+        dragOverStep(drag_[parts + k], 1 / object.getInvMass(), inertia,
+                     fromBt(basis.transpose() * object.getLinearVelocity()),
+                     fromBt(basis.transpose() * object.getAngularVelocity()), substep);
+    object.applyCentralForce(basis * toBt(drag.force));
+    object.applyTorque(basis * toBt(drag.torque));
+  }
+}
+
+void FeatherstoneWorld::correctMomentum(double substep) {
+  // every body's mass, centre, velocity, angular velocity and world inertia (Bullet's link frames
+  // sit at the bodies' centres)
+  FeatherstoneObjects& b = *bullet_;
+  btMultiBody& body = *b.body;
+  const int links = body.getNumLinks();
+  b.omega.resize(links + 1);
+  b.velocity.resize(links + 1);
+  body.compTreeLinkVelocities(&b.omega[0], &b.velocity[0]);
+  auto state = [&](int k, double& mass, btVector3& centre, btVector3& velocity, btVector3& spin,
+                   btMatrix3x3& inertia) {
+    btMatrix3x3 basis;
+    btVector3 principal;
+    if (k == 0) {
+      mass = body.getBaseMass();
+      centre = body.getBasePos();
+      velocity = body.getBaseVel();
+      spin = body.getBaseOmega();
+      basis = btMatrix3x3(body.getWorldToBaseRot().inverse());
+      principal = body.getBaseInertia();
+    } else {
+      const int link = k - 1;
+      mass = body.getLinkMass(link);
+      centre = body.localPosToWorld(link, btVector3(0, 0, 0));
+      velocity = body.localDirToWorld(link, b.velocity[k]);
+      spin = body.localDirToWorld(link, b.omega[k]);
+      for (int axis = 0; axis < 3; ++axis) {
+        btVector3 unit(0, 0, 0);
+        unit[axis] = 1;
+        const btVector3 column = body.localDirToWorld(link, unit);
+        for (int row = 0; row < 3; ++row)
+          basis[row][axis] = column[row];
+      }
+      principal = body.getLinkInertia(link);
+    }
+    inertia = basis.scaled(principal) * basis.transpose();
+  };
+
+  // the centre of mass and the momentum
+  double mass = 0;
+  btVector3 centre(0, 0, 0), momentum(0, 0, 0), velocity, spin, position;
+  btMatrix3x3 own;
+  for (int k = 0; k <= links; ++k) {
+    state(k, mass, position, velocity, spin, own);
+    centre += mass * position;
+    momentum += mass * velocity;
+  }
+  centre /= total_mass_;
+
+  // the angular momentum about the centre and the inertia of the whole body about it
+  btVector3 angular(0, 0, 0);
+  btMatrix3x3 inertia(0, 0, 0, 0, 0, 0, 0, 0, 0);
+  for (int k = 0; k <= links; ++k) {
+    state(k, mass, position, velocity, spin, own);
+    const btVector3 r = position - centre;
+    angular += mass * r.cross(velocity) + own * spin;
+    const btMatrix3x3 offset(r.dot(r) - r.x() * r.x(), -r.x() * r.y(), -r.x() * r.z(),
+                             -r.y() * r.x(), r.dot(r) - r.y() * r.y(), -r.y() * r.z(),
+                             -r.z() * r.x(), -r.z() * r.y(), r.dot(r) - r.z() * r.z());
+    for (int row = 0; row < 3; ++row)
+      inertia[row] += own[row] + mass * offset[row];
+  }
+  if (substep == 0) {  // birth: the state to keep to
+    centre_ = fromBt(centre);
+    momentum_ = fromBt(momentum);
+    angular_momentum_ = fromBt(angular);
+    return;
+  }
+
+  // what gravity and the drag gave over the step; a rigid motion of the whole body (a velocity
+  // and a rotation about the centre) that makes the body's momenta those, the joints untouched;
+  // then the centre moved by the momentum (symplectic Euler: x' = x + step v')
+  momentum_ = momentum_ + (drag_force_ + Vec3{0, 0, -gravity_ * total_mass_}) * substep;
+  angular_momentum_ = angular_momentum_ + drag_torque_ * substep;
+  const btVector3 added_velocity = (toBt(momentum_) - momentum) / total_mass_;
+  const btVector3 added_spin = inertia.inverse() * (toBt(angular_momentum_) - angular);
+  body.setBaseVel(body.getBaseVel() + added_velocity +
+                  added_spin.cross(body.getBasePos() - centre));
+  body.setBaseOmega(body.getBaseOmega() + added_spin);
+  centre_ = centre_ + momentum_ * (substep / total_mass_);
+  body.setBasePos(body.getBasePos() + toBt(centre_) - centre);
+  body.updateCollisionObjectWorldTransforms(b.world_to_local, b.local_origin);
 }
 
 void FeatherstoneWorld::addEffectorWorkBound(std::span<const double> commands, double substep) {
@@ -847,7 +1011,7 @@ double FeatherstoneWorld::mechanicalEnergy() const {
   };
 
   // kinetic, and m g z at each body's centre: a part's own, a virtual link's at its joint pivot
-  const double g = physics_.gravity;
+  const double g = gravity_;
   double energy = kinetic(0, body.getBaseMass(), body.getBaseInertia()) +
                   body.getBaseMass() * g * partPosition(0).z;
   for (int link = 0; link < links; ++link) {

@@ -1,9 +1,11 @@
 // cambrian: the Bullet Featherstone world — a creature as one btMultiBody (the root part the
-// floating base) on the environment's ground, with the environment's free objects as rigid
-// bodies. Multi-degree-of-freedom joints are chains of revolute joints through light virtual
-// links. Builds tree-shaped bodies only: a plan with closed-loop joints is refused (invalid_body).
+// floating base) on the environment's ground (or in its water), with the environment's free
+// objects as rigid bodies. Multi-degree-of-freedom joints are chains of revolute joints through
+// light virtual links. Builds tree-shaped bodies only: a plan with closed-loop joints is refused
+// (invalid_body).
 #pragma once
 
+#include "physics/viscous_drag.hpp"
 #include "physics/world.hpp"
 
 #include <array>
@@ -48,6 +50,8 @@ class FeatherstoneWorld : public World {
   void checkBirthPenetration();
   void stopSelfContacts();
   void applyTorques(std::span<const double> commands, double substep);
+  void applyDrag(double substep);
+  void correctMomentum(double substep);
   void addEffectorWorkBound(std::span<const double> commands, double substep);
   void anchorFriction(btCollisionObject& object) const;
   void refuse(EvalStatus status, std::string message);
@@ -63,10 +67,18 @@ class FeatherstoneWorld : public World {
   std::vector<std::array<int, 3>> dof_link_;
   std::vector<double> max_torque_;
   std::vector<std::uint8_t> contact_;
+  std::vector<int> part_link_;          // per part: the Bullet link carrying it (-1: the base)
+  std::vector<DragCoefficients> drag_;  // per part, then per object: in a fluid only
   std::vector<int> damped_links_;       // every revolute or prismatic link, real or virtual
   std::vector<int> virtual_link_part_;  // per Bullet link: the part whose pivot holds it (virtual
                                         // links of multi-DoF joints), or -1 (the part's own link)
   double work_bound_ = 0;               // effectorWorkBound()
+  double gravity_ = 0;                  // m/s^2 down: the environment's, else physics.gravity
+  bool correct_momentum_ = false;       // physics.momentum_correction, where it applies
+  double total_mass_ = 0;               // of every body, virtual links included
+  Vec3 centre_;                         // where the momentum has carried the centre of mass
+  Vec3 momentum_, angular_momentum_;    // what the outside forces gave (about the centre)
+  Vec3 drag_force_, drag_torque_;       // this Bullet step's drag: sum, moment about the centre
 };
 
 }  // namespace cambrian

@@ -16,7 +16,8 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
       .require([&p] { return p.time_step > 0 && p.time_step <= 0.1; }, "must be in (0, 0.1] s");
   s.add("physics.substeps", p.substeps, "Bullet steps per time step (torques re-applied each)")
       .require([&p] { return p.substeps >= 1 && p.substeps <= 100; }, "must be in 1..100");
-  s.add("physics.gravity", p.gravity, "gravity, m/s^2 (downwards)")
+  s.add("physics.gravity", p.gravity,
+        "gravity, m/s^2 (downwards) on the plane (water: environment.net_gravity)")
       .require([&p] { return p.gravity >= 0 && std::isfinite(p.gravity); }, "must be >= 0");
   s.add("physics.ground_friction", p.ground_friction, "ground friction coefficient")
       .require([&p] { return p.ground_friction >= 0 && std::isfinite(p.ground_friction); },
@@ -55,6 +56,10 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "(Bullet's plane-convex multipoint); false: Bullet's default, one new point a step "
         "(converges better at 2 substeps)")
       .earlierRunsUsed("false");
+  s.add("physics.momentum_correction", p.momentum_correction,
+        "without ground or objects (water): after each Bullet step the body's momentum and angular "
+        "momentum are what gravity and the fluid gave it (Bullet's integrator lets a wriggling "
+        "body drift and spin by itself); false: Bullet's as they come");
   s.add("physics.contact_slop", p.contact_slop,
         "overlap a contact keeps uncorrected, m (only deeper overlap is pushed apart)")
       .require([&p] { return p.contact_slop >= 0 && p.contact_slop <= 0.1; },

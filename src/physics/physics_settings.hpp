@@ -56,6 +56,14 @@ struct PhysicsSettings {
   /// m of overlap a contact keeps without correction: only deeper overlap is pushed apart, so a
   /// resting contact is not pushed out and dropped back every step (Box2D's linear slop).
   double contact_slop = 0.001;
+  /// Bullet's integrator changes a multibody's momentum when only its joints move (the map from
+  /// joint speeds to momentum moves with the body within a step), so a wriggling body drifts and
+  /// spins though nothing outside pushes it: a snake 0.36 m in 4.5 s in a vacuum at the defaults.
+  /// On: in a world where every outside force is known — no ground, no objects (water) — the
+  /// body's linear and angular momentum after each Bullet step are set to what gravity and the
+  /// fluid gave it, and its centre of mass to where that momentum carried it
+  /// (docs/physics-and-tasks.md, "No swimming in a vacuum"). On the ground the contacts hold it.
+  bool momentum_correction = true;
   /// Share of a contact's overlap (beyond contact_slop) removed per Bullet step (Bullet's erp2).
   double contact_erp = 0.2;
   int solver_iterations = 20;  ///< the most constraint solver iterations per Bullet step

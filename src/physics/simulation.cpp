@@ -17,13 +17,11 @@ constexpr double kStandardGravity = 9.81;
 Simulation::Simulation(const BodyPlan& plan, const ControllerPlan* controller,
                        const Environment& environment, const PhysicsSettings& settings,
                        double birth_height)
-    : plan_(plan), environment_(environment), settings_(settings) {
+    : plan_(plan), environment_(environment), settings_(settings), light_(environment.light) {
   // the controller first (a plan that does not fit the body throws), then the world
   sensors_.assign(plan_.sensors.size(), 0.0);
-  for (const SensorPlan& sensor : plan_.sensors) {
+  for (const SensorPlan& sensor : plan_.sensors)
     reads_contacts_ = reads_contacts_ || sensor.kind == SensorKind::contact;
-    reads_light_ = reads_light_ || sensor.kind == SensorKind::photo;
-  }
   drives_.assign(plan_.effectors.size(), 0.0);
   commands_.assign(plan_.effectors.size(), 0.0);
   if (controller)
@@ -60,11 +58,12 @@ void Simulation::fail(EvalStatus status, std::string message) {
 }
 
 void Simulation::readSensors() {
-  // contacts and the light's direction from the root (when a sensor reads them), then every
-  // sensor slot
+  // contacts (when a sensor reads them), then every sensor slot; a photosensor's part sees the
+  // light's direction in its own frame (made once for a run of sensors on one part)
   static const std::vector<std::uint8_t> kNoContacts;
   const std::vector<std::uint8_t>& contact = reads_contacts_ ? world_->contacts() : kNoContacts;
-  const Vec3 to_light = reads_light_ ? world_->directionInPart(0, environment_.light) : Vec3{};
+  Vec3 to_light;
+  int light_part = -1;
   for (std::size_t s = 0; s < plan_.sensors.size(); ++s) {
     const SensorPlan& sensor = plan_.sensors[s];
     switch (sensor.kind) {
@@ -77,6 +76,10 @@ void Simulation::readSensors() {
         sensors_[s] = contact[sensor.part];
         break;
       case SensorKind::photo:
+        if (sensor.part != light_part) {
+          light_part = sensor.part;
+          to_light = world_->directionInPart(sensor.part, light_);
+        }
         sensors_[s] = to_light[sensor.axis];
         break;
     }

@@ -57,6 +57,11 @@ class Simulation {
   const BodyPlan& plan() const { return plan_; }
   /// The world (for tasks that read the environment's objects).
   const World& world() const { return *world_; }
+  /// Where the light the photosensors point at is now (the environment's at first), world, m.
+  Vec3 light() const { return light_; }
+  /// Moves the light (a task that makes the creature follow it); sensors see it from the next
+  /// step.
+  void moveLight(Vec3 position) { light_ = position; }
   /// The sensor values of the last step (BodyPlan sensor order).
   const std::vector<double>& sensors() const { return sensors_; }
   /// The commands in [-1, 1] of the last step with the controller on (BodyPlan effector order).
@@ -90,7 +95,8 @@ class Simulation {
   std::uint64_t steps_ = 0;
 
   std::vector<double> sensors_, drives_, commands_;
-  bool reads_contacts_ = false, reads_light_ = false;  // what the sensors need of the world
+  bool reads_contacts_ = false;  // what the sensors need of the world
+  Vec3 light_;                   // light(), moveLight()
   std::vector<Vec3> birth_position_, previous_position_;
   double energy_scale_ = 0;
   double lowest_balance_ = 0;  // lowest energy minus work bound so far

@@ -58,6 +58,8 @@ class Episode {
   /// `seconds` with the controller on; each jury begins first and observes every step.
   bool run(double seconds, EvalPhase phase, std::initializer_list<Jury*> juries = {});
 
+  /// Moves the light the photosensors point at (a task that makes the creature follow it).
+  void moveLight(Vec3 position) { simulation_.moveLight(position); }
   /// The simulation (for juries and task measures).
   const Simulation& simulation() const { return simulation_; }
   /// The body.

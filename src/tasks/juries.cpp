@@ -1,4 +1,4 @@
-// cambrian: the distance and height juries and the walk normalisations.
+// cambrian: the distance, displacement, approach and height juries and the walk normalisations.
 #include "tasks/juries.hpp"
 
 #include <algorithm>
@@ -13,6 +13,28 @@ void DistanceJury::begin(const Simulation& simulation) {
 double DistanceJury::value(const Simulation& simulation) const {
   Vec3 moved = simulation.centerOfMass() - start_;
   return std::sqrt(moved.x * moved.x + moved.y * moved.y);
+}
+
+void DisplacementJury::begin(const Simulation& simulation) {
+  steps_ = 0;
+  start_ = simulation.centerOfMass();
+}
+
+void DisplacementJury::observe(const Simulation& simulation) {
+  if (++steps_ == from_step_)
+    start_ = simulation.centerOfMass();
+}
+
+double DisplacementJury::value(const Simulation& simulation) const {
+  return norm(simulation.centerOfMass() - start_);
+}
+
+void ApproachJury::begin(const Simulation& simulation) {
+  start_distance_ = norm(simulation.light() - simulation.centerOfMass());
+}
+
+double ApproachJury::value(const Simulation& simulation) const {
+  return start_distance_ - norm(simulation.light() - simulation.centerOfMass());
 }
 
 void HeightJury::begin(const Simulation& simulation) {

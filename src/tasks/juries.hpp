@@ -5,6 +5,8 @@
 
 #include "physics/simulation.hpp"
 
+#include <cstdint>
+
 namespace cambrian {
 
 /// A measure taken over the measured phase of an evaluation.
@@ -30,6 +32,36 @@ class DistanceJury : public Jury {
 
  private:
   Vec3 start_;
+};
+
+/// The straight-line (3-D) distance of the centre of mass from where it was after `from_step`
+/// measured steps (0: where measuring began) to where it is, m: Sims' swimming distance.
+class DisplacementJury : public Jury {
+ public:
+  explicit DisplacementJury(const char* name, std::uint64_t from_step = 0)
+      : name_(name), from_step_(from_step) {}
+  const char* name() const override { return name_; }
+  void begin(const Simulation& simulation) override;
+  void observe(const Simulation& simulation) override;
+  double value(const Simulation& simulation) const override;
+
+ private:
+  const char* name_;
+  std::uint64_t from_step_;
+  std::uint64_t steps_ = 0;
+  Vec3 start_;
+};
+
+/// "approach": how much nearer the light (Simulation::light) the centre of mass came while
+/// measured, m (negative: it went away).
+class ApproachJury : public Jury {
+ public:
+  const char* name() const override { return "approach"; }
+  void begin(const Simulation& simulation) override;
+  double value(const Simulation& simulation) const override;
+
+ private:
+  double start_distance_ = 0;
 };
 
 /// "height": the highest the creature's lowest point rose above the ground, m (WWD's jump).

@@ -6,15 +6,15 @@
 
 namespace cambrian {
 
-const Task& walkTask();       // tasks/walk.cpp
-const Task& jumpTask();       // tasks/jump.cpp
-const Task& syntheticTask();  // tasks/synthetic.cpp
+const Task& walkTask();         // tasks/walk.cpp
+const Task& jumpTask();         // tasks/jump.cpp
+const Task& syntheticTask();    // tasks/synthetic.cpp
+const Task& swimTask();         // tasks/swim.cpp
+const Task& followLightTask();  // tasks/follow_light.cpp
 
 const std::vector<const Task*>& tasks() {
   static const std::vector<const Task*> registered = {
-      &walkTask(),
-      &jumpTask(),
-      &syntheticTask(),
+      &walkTask(), &jumpTask(), &syntheticTask(), &swimTask(), &followLightTask(),
   };
   return registered;
 }

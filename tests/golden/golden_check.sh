@@ -8,9 +8,10 @@
 #   walk:      a walking evolution at NP ranks
 #   variants:  at NP ranks, evolutions through the other code paths: jump, explicit torques,
 #              self-collision, Chaumont's normalisation and rest rule, tournament / rank / sus
-#              selection, unconnected nodes collected, seed genomes
+#              selection, unconnected nodes collected, seed genomes, Sims' swimming in water and
+#              following a light
 #   simulate:  `cambrian simulate` on the hand-written creatures and random seeds (walk, jump,
-#              synthetic): status, fitness, every measure and the step count
+#              swim, follow_light, synthetic): status, fitness, every measure and the step count
 #   resume_v1: a run checkpointed by the cambrian of before the plug-in renovation
 #              (tests/store/data/v1_run: history.h5 and a version-1 checkpoint.h5 after 3 of 5
 #              generations) resumed at NP ranks: the digest of the straight run of that cambrian.
@@ -115,6 +116,9 @@ case $mode in
     evolve synthetic_lognormal --task.name synthetic --task.synthetic_cost_us 50 \
       --task.synthetic_distribution lognormal --task.synthetic_cv 0.8 \
       --evolution.population 20 --evolution.generations 4 --seed 9
+    evolve swim --config "$source_dir/jobs/experiments/sims/swim.ini" "${common[@]}" --seed 10
+    evolve follow_light --config "$source_dir/jobs/experiments/sims/follow-light.ini" \
+      "${common[@]}" --seed 11
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do
@@ -130,6 +134,14 @@ case $mode in
         --task.evaluation_time 3 --task.rest_check true
       simulate "simulate_random${seed}_jump" --random --seed "$seed" --task jump \
         --task.evaluation_time 2
+    done
+    simulate simulate_snake_swim --genome "$creatures/snake.genome" --task swim \
+      --environment.name water --task.evaluation_time 2
+    simulate simulate_walker4_follow_light --genome "$creatures/walker4.genome" \
+      --task follow_light --task.evaluation_time 2
+    for seed in 1 2; do
+      simulate "simulate_random${seed}_swim" --random --seed "$seed" --task swim \
+        --environment.name water --task.evaluation_time 2
     done
     simulate simulate_random3_synthetic --random --seed 3 --task synthetic \
       --task.synthetic_cost_us 10 --task.synthetic_distribution lognormal

@@ -271,5 +271,53 @@ TEST(Simulation, PhotosensorsPointAtTheLight) {
   EXPECT_NEAR(simulation.sensors()[2], 1.0, 1e-3);
 }
 
+// each photosensor sees the light's direction in its own part's frame, and follows the light
+// when it moves: a root turned 90 degrees about z (its x axis along world y) and a child
+// turned 90 degrees about y, in a world without gravity so nothing moves
+TEST(Simulation, PhotosensorsSeeTheLightFromTheirPart) {
+  BodyPlan plan;
+  plan.parts.push_back(box({0.2, 0.2, 0.2}, {0, 0, 0}));
+  plan.parts[0].pose.rotation = quatFromEuler({0, 0, kPi / 2});
+  PartPlan child = box({0.1, 0.1, 0.1}, {0, 0.15, 0}, 0);  // fixed to the root's +x face
+  child.pose.rotation = quatFromEuler({0, kPi / 2, 0});
+  child.parent_to_child = conjugate(plan.parts[0].pose.rotation) * child.pose.rotation;
+  child.pivot_in_parent = {0.1, 0, 0};
+  child.pivot_in_child = {0, -0.05, 0};
+  plan.parts.push_back(child);
+  for (int part : {0, 1})
+    for (int axis : {0, 1, 2})
+      plan.sensors.push_back({SensorKind::photo, part, axis});
+  PhysicsSettings physics;
+  Environment environment;
+  environment.gravity = 0;
+  Simulation simulation(plan, nullptr, environment, physics);
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  const Vec3 root = simulation.world().partPosition(0);
+  const Vec3 other = simulation.world().partPosition(1);
+
+  // straight along world +y from the root: the root's own +x
+  simulation.moveLight(root + Vec3{0, 5, 0});
+  simulation.step(false);
+  const std::vector<double>& seen = simulation.sensors();
+  EXPECT_NEAR(seen[0], 1, 1e-12);
+  EXPECT_NEAR(seen[1], 0, 1e-12);
+  EXPECT_NEAR(seen[2], 0, 1e-12);
+
+  // 3 m along -x and 4 m up: (-0.6, 0, 0.8) in the world, (0, 0.6, 0.8) in the root's frame
+  simulation.moveLight(root + Vec3{-3, 0, 4});
+  simulation.step(false);
+  EXPECT_NEAR(seen[0], 0, 1e-12);
+  EXPECT_NEAR(seen[1], 0.6, 1e-12);
+  EXPECT_NEAR(seen[2], 0.8, 1e-12);
+
+  // the child (pitched 90 degrees: its x axis along world -z) sees a light straight above it
+  // along its own -x
+  simulation.moveLight(other + Vec3{0, 0, 2});
+  simulation.step(false);
+  EXPECT_NEAR(seen[3], -1, 1e-12);
+  EXPECT_NEAR(seen[4], 0, 1e-12);
+  EXPECT_NEAR(seen[5], 0, 1e-12);
+}
+
 }  // namespace
 }  // namespace cambrian

@@ -1,6 +1,8 @@
 // Tests of the juries and the walk normalisations.
 #include "tasks/juries.hpp"
 
+#include "physics/water_environment.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,6 +108,38 @@ TEST(Juries, DistanceIsHorizontalTravelFromBegin) {
   // it fell 0.3 m straight down: no horizontal travel (contact jitter aside)
   EXPECT_LT(distance.value(sim.simulation), 1e-3);
   EXPECT_STREQ(distance.name(), "distance");
+}
+
+// a plate sinking in water (net gravity 1 m/s^2) with a light 10 m straight below it: the
+// approach is the depth it sank; the displacement from step 100 on is the depth sunk since
+TEST(Juries, ApproachAndDisplacementOfASinkingPlate) {
+  BodyPlan plan = boxes({{0.4, 0.4, 0.02}});
+  WaterEnvironment water;
+  water.net_gravity = 1;
+  Environment environment = water.build(PhysicsSettings{});
+  Simulation simulation(plan, nullptr, environment, PhysicsSettings{});
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  const Vec3 start = simulation.centerOfMass();
+  simulation.moveLight(start - Vec3{0, 0, 10});
+  ApproachJury approach;
+  DisplacementJury whole("distance"), late("late", 100);
+  for (Jury* jury : std::initializer_list<Jury*>{&approach, &whole, &late})
+    jury->begin(simulation);
+  double z100 = 0;
+  for (int s = 1; s <= 240; ++s) {
+    simulation.step(false);
+    for (Jury* jury : std::initializer_list<Jury*>{&approach, &whole, &late})
+      jury->observe(simulation);
+    if (s == 100)
+      z100 = simulation.centerOfMass().z;
+  }
+  ASSERT_EQ(simulation.status(), EvalStatus::ok);
+  const double sunk = start.z - simulation.centerOfMass().z;
+  EXPECT_GT(sunk, 0.05);
+  EXPECT_NEAR(approach.value(simulation), sunk, 1e-12);
+  EXPECT_NEAR(whole.value(simulation), sunk, 1e-12);
+  EXPECT_NEAR(late.value(simulation), z100 - simulation.centerOfMass().z, 1e-12);
+  EXPECT_STREQ(late.name(), "late");
 }
 
 }  // namespace
