@@ -4,8 +4,12 @@
 #include "cambrian/error.hpp"
 
 #include "core/settings.hpp"
+#include "encodings/directed_graph/gene_ranges.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <sstream>
 
 namespace cambrian::graph {
 
@@ -81,6 +85,11 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
   s.add("genome.max_frequency", g.max_frequency, "highest joint oscillator frequency, Hz")
       .require([&g] { return g.max_frequency >= 0 && std::isfinite(g.max_frequency); },
                "must be >= 0 and finite");
+  s.add("genome.joint_types", joint_type_names,
+        "the joint types genomes may use: rigid revolute universal spherical (Chaumont et al.: "
+        "rigid revolute, one degree of freedom at most)")
+      .require([this] { return parseJointTypes(); },
+               "must name one or more of rigid, revolute, universal, spherical, each once");
 
   // [evolution]: the structural mutation rates of the graph (their historic keys)
   MutationSettings& m = mutation;
@@ -102,6 +111,25 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
               "chance a mutation removes a neuron");
   s.add("evolution.keep_unconnected", m.keep_unconnected,
         "keep nodes unreachable from the root (Chaumont) instead of collecting them");
+}
+
+bool DirectedGraphEncoding::parseJointTypes() {
+  std::uint8_t mask = 0;
+  std::istringstream names(joint_type_names);
+  for (std::string name; names >> name;) {
+    const auto* end = std::end(kJointNames);
+    const auto* found = std::find(std::begin(kJointNames), end, name);
+    if (found == end)
+      return false;
+    const auto bit = static_cast<std::uint8_t>(1u << (found - std::begin(kJointNames)));
+    if (mask & bit)
+      return false;
+    mask |= bit;
+  }
+  if (mask == 0)
+    return false;
+  limits.joint_types = mask;
+  return true;
 }
 
 Genotype DirectedGraphEncoding::random(std::uint64_t seed, std::uint64_t generation,

@@ -50,6 +50,12 @@ class DirectedGraphEncoding : public Encoding {
 
   /// The limits genomes are made, checked and developed under ([genome] keys).
   GenomeLimits limits;
+  /// Sets limits.joint_types from joint_type_names; false (and unchanged) for an unknown or
+  /// repeated name or none.
+  bool parseJointTypes();
+  /// genome.joint_types: the names of the allowed joint types, separated by spaces
+  /// (GenomeLimits::joint_types)
+  std::string joint_type_names = "rigid revolute universal spherical";
   /// The structural mutation rates ([evolution] keys; parameter_rate comes with each call).
   MutationSettings mutation;
 };

@@ -33,6 +33,33 @@ constexpr std::uint8_t kReflectionMask = 0x7;
 constexpr int kPartShapeCount = 1;
 /// Number of JointType values.
 constexpr int kJointTypeCount = 4;
+/// The joint types' names in the text form and in genome.joint_types, by JointType value.
+inline constexpr const char* kJointNames[] = {"rigid", "revolute", "universal", "spherical"};
+/// Every joint type allowed (GenomeLimits::joint_types).
+constexpr std::uint8_t kAllJointTypes = (1u << kJointTypeCount) - 1;
+
+/// Whether `type` is among the joint types `limits` allows.
+inline bool jointTypeAllowed(const GenomeLimits& limits, JointType type) {
+  const auto value = static_cast<unsigned>(type);
+  return value < kJointTypeCount && (limits.joint_types >> value & 1u) != 0;
+}
+/// How many joint types `limits` allows (at least one).
+inline int allowedJointTypeCount(const GenomeLimits& limits) {
+  int count = 0;
+  for (int t = 0; t < kJointTypeCount; ++t)
+    count += limits.joint_types >> t & 1;
+  return count;
+}
+/// The `index`-th allowed joint type (index < allowedJointTypeCount), in JointType order: with
+/// every type allowed, JointType(index), so draws over all types are unchanged.
+inline JointType allowedJointType(const GenomeLimits& limits, std::uint64_t index) {
+  for (int t = 0; t < kJointTypeCount; ++t) {
+    if ((limits.joint_types >> t & 1) && index-- == 0)
+      return static_cast<JointType>(t);
+  }
+  return JointType::fixed;
+}
+
 /// Number of NeuronFunction values.
 constexpr int kNeuronFunctionCount = static_cast<int>(NeuronFunction::count_);
 /// Number of SignalSource values.

@@ -113,6 +113,9 @@ struct GenomeLimits {
   double max_weight = 5;                         ///< |weight| of an input
   double max_scale = 2, min_scale = 0.5;
   double max_frequency = 4;  ///< Hz, oscillators and joint controllers
+  /// Bit t set: JointType t may appear (genome.joint_types); Chaumont et al. allow only the
+  /// one-degree-of-freedom types. Random genomes and every operator keep to it.
+  std::uint8_t joint_types = 0xF;
 };
 
 //---------------------------------------------------------------- operations

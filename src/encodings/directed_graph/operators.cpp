@@ -70,7 +70,7 @@ class Perturber {
 
     // joint, keeping one effector per degree of freedom
     if (rng_.bernoulli(settings_.parameter_rate)) {
-      p.joint_type = static_cast<JointType>(rng_.below(kJointTypeCount));
+      p.joint_type = allowedJointType(limits_, rng_.below(allowedJointTypeCount(limits_)));
       auto dof = static_cast<std::size_t>(degreesOfFreedom(p.joint_type));
       if (p.effectors.size() > dof)
         p.effectors.resize(dof);

@@ -67,8 +67,8 @@ PartGene randomPartGene(const GenomeLimits& limits, Rng& rng) {
   }
   node.density = uniformWithin(rng, 500, 1500, limits.min_density, limits.max_density);
 
-  // joint to the parent, all types
-  node.joint_type = static_cast<JointType>(rng.below(kJointTypeCount));
+  // joint to the parent, any allowed type
+  node.joint_type = allowedJointType(limits, rng.below(allowedJointTypeCount(limits)));
   for (int k = 0; k < 3; ++k)
     node.joint_limit[k] = rng.uniform(0.3, 1.5);
   node.recursive_limit = 1;

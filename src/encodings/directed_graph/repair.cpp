@@ -51,6 +51,10 @@ void fitNode(PartGene& node, const GenomeLimits& limits) {
   }
   node.density = clampToRange(node.density, limits.min_density, limits.max_density);
   node.joint_type = wrapEnum(node.joint_type, kJointTypeCount);
+  if (!jointTypeAllowed(limits, node.joint_type)) {
+    node.joint_type = allowedJointType(
+        limits, static_cast<unsigned>(node.joint_type) % allowedJointTypeCount(limits));
+  }
   int max_recursion = std::clamp(limits.max_recursive_limit, 1, 255);
   node.recursive_limit = static_cast<std::uint8_t>(
       std::clamp(static_cast<int>(node.recursive_limit), 1, max_recursion));

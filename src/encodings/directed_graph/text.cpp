@@ -31,7 +31,6 @@ bool isDefaultController(const JointControllerGene& controller) {
          same(controller.offset, none.offset);
 }
 
-constexpr const char* kJointNames[] = {"rigid", "revolute", "universal", "spherical"};
 constexpr const char* kShapeNames[] = {"box"};
 constexpr const char* kSourceNames[] = {"constant",      "local_sensor", "local_neuron",
                                         "parent_neuron", "child_neuron", "brain_neuron",

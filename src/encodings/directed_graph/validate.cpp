@@ -79,6 +79,10 @@ void checkNode(std::size_t index, const PartGene& node, const GenomeLimits& limi
   checkRange(where, "density", node.density, limits.min_density, "genome.min_density",
              limits.max_density, "genome.max_density");
   checkEnum(where, "joint_type", static_cast<int>(node.joint_type), kJointTypeCount);
+  if (!jointTypeAllowed(limits, node.joint_type)) {
+    throw GenomeError(where + ": joint " + kJointNames[static_cast<int>(node.joint_type)] +
+                      " is not among genome.joint_types");
+  }
   for (int k = 0; k < 3; ++k) {
     checkFixedRange(where, std::string("joint_limit.") + kAxes[k], node.joint_limit[k], 0,
                     kJointLimitMax);

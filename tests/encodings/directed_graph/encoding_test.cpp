@@ -144,5 +144,64 @@ TEST(DirectedGraphEncoding, EveryKeyAValidationMessageNamesExists) {
     EXPECT_NE(schema.find(name), nullptr) << name << " is named by validate.cpp but not declared";
 }
 
+// genome.joint_types: names known, each once, at least one; the mask follows them
+TEST(DirectedGraphEncoding, JointTypesAreASetOfNames) {
+  DirectedGraphEncoding encoding;
+  SettingsSchema schema;
+  encoding.declareSettings(schema);
+  EXPECT_EQ(encoding.limits.joint_types, 0xF);
+  schema.set("genome.joint_types", "rigid revolute");
+  EXPECT_NO_THROW(schema.check());
+  EXPECT_EQ(encoding.limits.joint_types, 0x3);
+  for (const char* bad : {"revolute wheel", "", "revolute revolute"}) {
+    schema.set("genome.joint_types", bad);
+    EXPECT_THROW(schema.check(), ConfigError) << bad;
+  }
+}
+
+// Chaumont et al.'s one-degree-of-freedom joints: random genomes, every operator and every
+// developed body keep to them, and a genome with a universal joint is refused by name
+TEST(DirectedGraphEncoding, OneDegreeOfFreedomJointsOnlyHoldUnderEveryOperator) {
+  DirectedGraphEncoding encoding;
+  SettingsSchema schema;
+  encoding.declareSettings(schema);
+  schema.set("genome.joint_types", "rigid revolute");
+  schema.set("evolution.add_node_rate", "0.5");
+  schema.check();
+  auto expectOneDof = [&](const Genotype& genome, const char* what, std::uint64_t i) {
+    for (const PartGene& node : graphGenome(genome).nodes)
+      EXPECT_LE(degreesOfFreedom(node.joint_type), 1) << what << " " << i;
+    EXPECT_NO_THROW(encoding.validate(genome)) << what << " " << i;
+    for (const PartPlan& part : encoding.develop(genome).body.parts)
+      EXPECT_LE(degreesOfFreedom(part.joint), 1) << what << " " << i;
+  };
+  std::set<JointType> seen;
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    Genotype genome = encoding.random(3, 0, i);
+    expectOneDof(genome, "random", i);
+    for (const PartGene& node : graphGenome(genome).nodes)
+      seen.insert(node.joint_type);
+    Rng rng(6, RngPurpose::test, 0, i);
+    Genotype mutant = encoding.tidy(encoding.mutate(genome, 1.0, rng));
+    expectOneDof(mutant, "mutation", i);
+    for (const PartGene& node : graphGenome(mutant).nodes)
+      seen.insert(node.joint_type);
+    Genotype other = encoding.random(3, 1, i);
+    expectOneDof(encoding.tidy(encoding.combine(Variation::crossover, genome, other, rng)),
+                 "crossover", i);
+    expectOneDof(encoding.tidy(encoding.combine(Variation::graft, genome, other, rng)), "graft", i);
+  }
+  EXPECT_EQ(seen, (std::set<JointType>{JointType::fixed, JointType::revolute}));
+
+  try {
+    encoding.validate(readGenomeFile(kCreatures + "walker4.genome"));
+    ADD_FAILURE() << "a universal joint passed genome.joint_types = rigid revolute";
+  } catch (const GenomeError& error) {
+    EXPECT_NE(std::string(error.what()).find("joint universal is not among genome.joint_types"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace cambrian::graph
