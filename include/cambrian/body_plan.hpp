@@ -81,6 +81,9 @@ enum class SensorKind : std::uint8_t {
   joint_angle,  ///< position of degree of freedom `axis` of the joint to the parent / its limit
   contact,      ///< 1 if the part touches anything, else 0
   photo,        ///< component `axis` of the unit direction to the light in the part's frame
+  /// face `axis` of the part (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z): 1 if something touches it,
+  /// else -1 (Sims; Chaumont et al.'s `sen`)
+  contact_face,
 };
 
 struct SensorPlan {

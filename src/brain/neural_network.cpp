@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace cambrian {
@@ -24,11 +25,20 @@ constexpr double kExpCap = 10;
 constexpr double kMaxOscillatorHz = 4;
 constexpr double kTwoPi = 2 * kPi;
 
-// non-finite values become 0, finite ones are clamped to the signal range
-double bounded(double value) {
+// the longest delay of a delay neuron, steps
+constexpr int kMaxDelay = 16;
+
+// non-finite values become 0, finite ones are clamped to +-limit
+double bounded(double value, double limit = kSignalLimit) {
   if (!std::isfinite(value))
     return 0;
-  return std::clamp(value, -kSignalLimit, kSignalLimit);
+  return std::clamp(value, -limit, limit);
+}
+
+// a delay neuron's delay in steps
+int delaySteps(double parameter) {
+  const double steps = std::round(std::fabs(parameter));
+  return steps >= kMaxDelay ? kMaxDelay : std::max(1, static_cast<int>(steps));
 }
 
 // sawtooth in [-1, 1] rising through 0 where sin(theta) does
@@ -66,6 +76,7 @@ int neuronArity(NeuronFunction function) {
     case NeuronFunction::memory:
     case NeuronFunction::oscillate_wave:
     case NeuronFunction::oscillate_saw:
+    case NeuronFunction::delay:
       return 1;
     case NeuronFunction::sum:
     case NeuronFunction::product:
@@ -74,9 +85,12 @@ int neuronArity(NeuronFunction function) {
     case NeuronFunction::greater_than:
     case NeuronFunction::min:
     case NeuronFunction::max:
+    case NeuronFunction::sum_above:
+    case NeuronFunction::divide_or_one:
       return 2;
     case NeuronFunction::if_positive:
     case NeuronFunction::interpolate:
+    case NeuronFunction::wave:
       return 3;
     case NeuronFunction::count_:
       break;
@@ -108,7 +122,11 @@ const char* neuronFunctionName(NeuronFunction function) {
                                            "smooth",
                                            "memory",
                                            "oscillate_wave",
-                                           "oscillate_saw"};
+                                           "oscillate_saw",
+                                           "sum_above",
+                                           "divide_or_one",
+                                           "delay",
+                                           "wave"};
   static_assert(sizeof(kNames) / sizeof(kNames[0]) ==
                 static_cast<std::size_t>(NeuronFunction::count_));
   auto i = static_cast<std::size_t>(function);
@@ -162,6 +180,23 @@ NeuralNetwork::NeuralNetwork(const NeuralNetworkPlan& plan, double time_step)
     }
   }
 
+  // the bound, and a ring of past inputs per delay neuron
+  if (!(plan.signal_bound > 0) || !(plan.signal_bound <= kSignalLimit)) {
+    throw Error(ExitCode::failure, "network: signal_bound = " + std::to_string(plan.signal_bound) +
+                                       " must be in (0, 1000]");
+  }
+  bound_ = plan.signal_bound;
+  bound_inputs_ = bound_ < kSignalLimit;
+  ring_.assign(neuron_count_, 0);
+  length_.assign(neuron_count_, 0);
+  for (int n = 0; n < neuron_count_; ++n) {
+    if (plan.neurons[n].function != NeuronFunction::delay)
+      continue;
+    ring_[n] = static_cast<std::uint32_t>(delayed_.size());
+    length_[n] = static_cast<std::uint8_t>(delaySteps(plan.neurons[n].parameter));
+    delayed_.resize(delayed_.size() + length_[n], 0.0);
+  }
+
   // effectors: one wire each
   const std::size_t effectors = plan.effector_inputs.size();
   effector_signal_.resize(effectors);
@@ -178,6 +213,7 @@ void NeuralNetwork::reset() {
   std::fill(signals_.begin(), signals_.end(), 0.0);
   std::fill(next_signals_.begin(), next_signals_.end(), 0.0);
   std::fill(state_.begin(), state_.end(), 0.0);
+  std::fill(delayed_.begin(), delayed_.end(), 0.0);
   steps_ = 0;
   time_ = 0;
 }
@@ -197,11 +233,15 @@ void NeuralNetwork::step(std::span<const double> sensors, std::span<double> driv
     return std::isfinite(value) ? value : 0.0;
   };
 
-  // every neuron reads the previous step's signals and writes next_signals_
+  // every neuron reads the previous step's signals and writes next_signals_ (under a bound
+  // below the default, its inputs are bounded too)
+  const double limit = bound_inputs_ ? bound_ : std::numeric_limits<double>::infinity();
   for (int n = 0; n < neuron_count_; ++n) {
-    const double a = wire(input_signal_[3 * n], input_weight_[3 * n]);
-    const double b = wire(input_signal_[3 * n + 1], input_weight_[3 * n + 1]);
-    const double c = wire(input_signal_[3 * n + 2], input_weight_[3 * n + 2]);
+    const double a = std::clamp(wire(input_signal_[3 * n], input_weight_[3 * n]), -limit, limit);
+    const double b =
+        std::clamp(wire(input_signal_[3 * n + 1], input_weight_[3 * n + 1]), -limit, limit);
+    const double c =
+        std::clamp(wire(input_signal_[3 * n + 2], input_weight_[3 * n + 2]), -limit, limit);
     const double p = parameter_[n];
     double& state = state_[n];
     double out = 0;
@@ -283,10 +323,25 @@ void NeuralNetwork::step(std::span<const double> sensors, std::span<double> driv
       case NeuronFunction::oscillate_saw:
         out = sawtooth(kTwoPi * std::min(std::fabs(p), kMaxOscillatorHz) * t + a);
         break;
+      case NeuronFunction::sum_above:
+        out = a + b >= p ? a + b : 0.0;
+        break;
+      case NeuronFunction::divide_or_one:
+        out = b <= kDivideEpsilon ? 1.0 : a / b;
+        break;
+      case NeuronFunction::delay: {
+        double& slot = delayed_[ring_[n] + steps_ % length_[n]];
+        out = slot;
+        slot = a;
+        break;
+      }
+      case NeuronFunction::wave:
+        out = b * std::sin(a * static_cast<double>(steps_) + c);
+        break;
       case NeuronFunction::count_:
         break;
     }
-    next_signals_[n] = bounded(out);
+    next_signals_[n] = bounded(out, bound_);
   }
 
   // the new neuron outputs become visible all at once

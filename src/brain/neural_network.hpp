@@ -36,7 +36,12 @@ enum class NeuronFunction : std::uint8_t {
   memory,
   oscillate_wave,
   oscillate_saw,
-  count_  ///< number of functions; not a function
+  // Chaumont et al.'s own (2007, Table I), where they differ from the above
+  sum_above,      ///< sumT: a + b if a + b >= parameter, else 0
+  divide_or_one,  ///< div: 1 if b <= 1e-6, else a / b
+  delay,          ///< mem: a as it was n = round(|parameter|) steps ago (1..16; 0 before)
+  wave,           ///< wav: b sin(a k + c), k the step count
+  count_          ///< number of functions; not a function
 };
 
 /// Number of inputs a neuron function reads (0..3).
@@ -68,6 +73,10 @@ class NeuralNetworkPlan : public ControllerPlan {
   std::vector<NeuronPlan> neurons;
   std::vector<Wire> effector_inputs;  ///< one per BodyPlan effector
   std::size_t sensor_count = 0;       ///< sensors the wires were made for
+  /// Every neuron output (and, when below the default, every neuron input) is kept within
+  /// +-signal_bound: 1000 for Sims' network, 1 for Chaumont et al.'s ("every input value lies in
+  /// the interval [-1, 1], every output value is also restricted to the same interval").
+  double signal_bound = 1000;
 
   std::string kind() const override { return "network"; }
   std::unique_ptr<Controller> build(double time_step, std::size_t sensors,
@@ -93,6 +102,11 @@ class NeuralNetwork : public Controller {
  private:
   // compiled from the plan: see neural_network.cpp
   std::vector<double> signals_, next_signals_, state_;
+  std::vector<double> delayed_;       // the delay neurons' past inputs, each its own ring
+  std::vector<std::uint32_t> ring_;   // per neuron: where its ring starts in delayed_
+  std::vector<std::uint8_t> length_;  // per neuron: its ring's length (delay neurons)
+  double bound_ = 1000;               // NeuralNetworkPlan::signal_bound
+  bool bound_inputs_ = false;         // the bound is below the default: inputs clamped too
   std::vector<std::uint8_t> function_;
   std::vector<double> parameter_;
   std::vector<int> input_signal_;     // 3 per neuron, -1 = constant

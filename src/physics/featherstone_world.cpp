@@ -762,22 +762,30 @@ void FeatherstoneWorld::checkBirthPenetration() {
 }
 
 const std::vector<std::uint8_t>& FeatherstoneWorld::contacts() {
-  // every manifold with a touching point marks both parts
+  // every touching point marks, on each part it joins, the face that looks most nearly towards
+  // the other body (the contact normal in the part's frame: a box's corner lies on three faces,
+  // its normal picks the one pressed)
   std::fill(contact_.begin(), contact_.end(), 0);
+  auto mark = [this](int part, const btVector3& towards_other) {
+    if (part < 0)
+      return;  // the ground or an object
+    const btVector3 local =
+        bullet_->colliders[part]->getWorldTransform().getBasis().transpose() * towards_other;
+    const int axis = local.closestAxis();
+    contact_[part] |= static_cast<std::uint8_t>(1u << (2 * axis + (local[axis] < 0 ? 1 : 0)));
+  };
   btDispatcher* dispatcher = bullet_->world.getDispatcher();
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    bool touching = false;
-    for (int c = 0; c < manifold->getNumContacts() && !touching; ++c)
-      touching = manifold->getContactPoint(c).getDistance() <= 0.001;
-    if (!touching)
-      continue;
-    int part_a = manifold->getBody0()->getUserIndex();
-    int part_b = manifold->getBody1()->getUserIndex();
-    if (part_a >= 0)
-      contact_[part_a] = 1;
-    if (part_b >= 0)
-      contact_[part_b] = 1;
+    const int part_a = manifold->getBody0()->getUserIndex();
+    const int part_b = manifold->getBody1()->getUserIndex();
+    for (int c = 0; c < manifold->getNumContacts(); ++c) {
+      const btManifoldPoint& point = manifold->getContactPoint(c);
+      if (point.getDistance() > 0.001)
+        continue;
+      mark(part_a, -point.m_normalWorldOnB);  // the normal on B points towards A
+      mark(part_b, point.m_normalWorldOnB);
+    }
   }
   return contact_;
 }

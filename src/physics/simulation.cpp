@@ -20,8 +20,10 @@ Simulation::Simulation(const BodyPlan& plan, const ControllerPlan* controller,
     : plan_(plan), environment_(environment), settings_(settings), light_(environment.light) {
   // the controller first (a plan that does not fit the body throws), then the world
   sensors_.assign(plan_.sensors.size(), 0.0);
-  for (const SensorPlan& sensor : plan_.sensors)
-    reads_contacts_ = reads_contacts_ || sensor.kind == SensorKind::contact;
+  for (const SensorPlan& sensor : plan_.sensors) {
+    reads_contacts_ = reads_contacts_ || sensor.kind == SensorKind::contact ||
+                      sensor.kind == SensorKind::contact_face;
+  }
   drives_.assign(plan_.effectors.size(), 0.0);
   commands_.assign(plan_.effectors.size(), 0.0);
   if (controller)
@@ -73,7 +75,10 @@ void Simulation::readSensors() {
         break;
       }
       case SensorKind::contact:
-        sensors_[s] = contact[sensor.part];
+        sensors_[s] = contact[sensor.part] != 0 ? 1.0 : 0.0;
+        break;
+      case SensorKind::contact_face:
+        sensors_[s] = (contact[sensor.part] >> sensor.axis & 1u) != 0 ? 1.0 : -1.0;
         break;
       case SensorKind::photo:
         if (sensor.part != light_part) {

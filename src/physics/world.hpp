@@ -43,7 +43,9 @@ class World {
   /// Position of degree of freedom `dof` of the joint between `part` and its parent (radians,
   /// prismatic: m); 0 for a fixed joint.
   virtual double jointPosition(int part, int dof) const = 0;
-  /// Per part: 1 when it touches anything (after the last step), else 0.
+  /// Per part, what touches it after the last step: bit f set when something touches its face f
+  /// (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z, the face a contact point lies nearest to); 0 when
+  /// nothing touches it.
   virtual const std::vector<std::uint8_t>& contacts() = 0;
   /// The unit direction from part `part` towards the world point `point`, in the part's frame.
   virtual Vec3 directionInPart(int part, Vec3 point) const = 0;

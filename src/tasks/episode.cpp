@@ -55,8 +55,11 @@ Episode::Episode(const Creature& creature, const Environment& environment,
                  const PhysicsSettings& physics, const EpisodeSettings& settings,
                  Clock::time_point start, FrameObserver* observer)
     : creature_(creature),
+      environment_(environment),
+      physics_(physics),
       settings_(settings),
-      simulation_(creature.body, creature.controller.get(), environment, physics),
+      simulation_(std::make_unique<Simulation>(creature.body, creature.controller.get(),
+                                               environment, physics)),
       observer_(observer) {
   const BodyPlan& plan = creature.body;
   outcome_.parts = static_cast<int>(plan.parts.size());
@@ -74,13 +77,21 @@ Episode::Episode(const Creature& creature, const Environment& environment,
   }
 }
 
+void Episode::restart() {
+  steps_before_ += simulation_->steps();
+  simulation_ = std::make_unique<Simulation>(creature_.body, creature_.controller.get(),
+                                             environment_, physics_);
+  if (observer_)
+    show(EvalPhase::settle);
+}
+
 void Episode::show(EvalPhase phase) {
-  simulation_.partPoses(poses_);
+  simulation_->partPoses(poses_);
   EvalFrame frame;
-  frame.step = simulation_.steps();
-  frame.time = simulation_.time();
+  frame.step = totalSteps();
+  frame.time = static_cast<double>(frame.step) * simulation_->timeStep();
   frame.phase = phase;
-  frame.center_of_mass = simulation_.centerOfMass();
+  frame.center_of_mass = simulation_->centerOfMass();
   frame.poses = poses_;
   observer_->frame(frame);
 }
@@ -92,29 +103,29 @@ bool Episode::pastDeadline() const {
 Episode::PhaseEnd Episode::runSteps(std::uint64_t steps, bool controller_on, EvalPhase phase,
                                     std::initializer_list<Jury*> juries, bool rest) {
   // the rest check: every part's centre slower than rest_speed for rest_time in a row
-  const double dt = simulation_.timeStep();
+  const double dt = simulation_->timeStep();
   const std::uint64_t rest_needed = stepsIn(settings_.rest_time, dt);
   const std::uint64_t last = rest ? std::max(steps, stepsIn(settings_.settle_max_time, dt)) : steps;
   std::uint64_t run = 0, longest = 0;
   double fastest = 0;
   for (Jury* jury : juries)
-    jury->begin(simulation_);
+    jury->begin(*simulation_);
 
   for (std::uint64_t s = 0; s < last; ++s) {
-    simulation_.step(controller_on);
-    if (simulation_.status() != EvalStatus::ok)
+    simulation_->step(controller_on);
+    if (simulation_->status() != EvalStatus::ok)
       return PhaseEnd::stopped;
     for (Jury* jury : juries)
-      jury->observe(simulation_);
+      jury->observe(*simulation_);
     // a frame for the observer, if any (it only reads)
-    if (observer_ && simulation_.steps() % stride_ == 0)
+    if (observer_ && totalSteps() % stride_ == 0)
       show(phase);
     // wall-clock bound, looked at every 256 steps
-    if (bounded_ && (simulation_.steps() & 255) == 0 && Clock::now() > deadline_)
+    if (bounded_ && (totalSteps() & 255) == 0 && Clock::now() > deadline_)
       return PhaseEnd::stopped;
     // a settle phase with the rest check ends once the body has rested long enough
     if (rest) {
-      fastest = simulation_.fastestPartSpeed();
+      fastest = simulation_->fastestPartSpeed();
       run = fastest <= settings_.rest_speed ? run + 1 : 0;
       longest = std::max(longest, run);
       if (run >= rest_needed && s + 1 >= steps)
@@ -138,20 +149,20 @@ Episode::PhaseEnd Episode::runSteps(std::uint64_t steps, bool controller_on, Eva
 }
 
 bool Episode::settle(double seconds, EvalPhase phase) {
-  return runSteps(stepsIn(seconds, simulation_.timeStep()), false, phase, {},
+  return runSteps(stepsIn(seconds, simulation_->timeStep()), false, phase, {},
                   settings_.rest_check) == PhaseEnd::done;
 }
 
 bool Episode::run(double seconds, EvalPhase phase, std::initializer_list<Jury*> juries) {
-  return runSteps(stepsIn(seconds, simulation_.timeStep()), true, phase, juries, false) ==
+  return runSteps(stepsIn(seconds, simulation_->timeStep()), true, phase, juries, false) ==
          PhaseEnd::done;
 }
 
 Outcome Episode::finish() {
-  outcome_.steps = simulation_.steps();
-  if (simulation_.status() != EvalStatus::ok) {
-    outcome_.status = simulation_.status();
-    outcome_.message = simulation_.message();
+  outcome_.steps = totalSteps();
+  if (simulation_->status() != EvalStatus::ok) {
+    outcome_.status = simulation_->status();
+    outcome_.message = simulation_->message();
     outcome_.fitness = kWorstFitness;
   } else if (pastDeadline()) {
     outcome_.status = EvalStatus::timeout;

@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <initializer_list>
+#include <memory>
 #include <vector>
 
 namespace cambrian {
@@ -52,16 +53,19 @@ class Episode {
           const EpisodeSettings& settings, Clock::time_point start, FrameObserver* observer);
 
   /// Whether the creature was born (status ok after building the world).
-  bool born() const { return simulation_.status() == EvalStatus::ok; }
+  bool born() const { return simulation_->status() == EvalStatus::ok; }
+  /// Starts again from birth in a fresh world (another trial of the same creature, Sims'
+  /// "several trials"); the steps taken so far still count in the outcome and the frames.
+  void restart();
   /// A settle phase of `seconds` (controller off); with the rest check, until at rest.
   bool settle(double seconds, EvalPhase phase);
   /// `seconds` with the controller on; each jury begins first and observes every step.
   bool run(double seconds, EvalPhase phase, std::initializer_list<Jury*> juries = {});
 
   /// Moves the light the photosensors point at (a task that makes the creature follow it).
-  void moveLight(Vec3 position) { simulation_.moveLight(position); }
+  void moveLight(Vec3 position) { simulation_->moveLight(position); }
   /// The simulation (for juries and task measures).
-  const Simulation& simulation() const { return simulation_; }
+  const Simulation& simulation() const { return *simulation_; }
   /// The body.
   const BodyPlan& plan() const { return creature_.body; }
   /// The protocol settings.
@@ -79,9 +83,14 @@ class Episode {
   void show(EvalPhase phase);
   bool pastDeadline() const;
 
+  std::uint64_t totalSteps() const { return steps_before_ + simulation_->steps(); }
+
   const Creature& creature_;
+  const Environment& environment_;
+  PhysicsSettings physics_;
   EpisodeSettings settings_;
-  Simulation simulation_;
+  std::unique_ptr<Simulation> simulation_;
+  std::uint64_t steps_before_ = 0;  // steps of the trials before restart()
   Outcome outcome_;
   bool bounded_ = false;
   Clock::time_point deadline_;

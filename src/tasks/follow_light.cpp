@@ -1,6 +1,7 @@
-// cambrian: the follow_light task — Sims' (1994) following: the light the photosensors see is
-// put in several places around the creature during the measured time, and the fitness is the
-// average speed at which the centre of mass moves towards it.
+// cambrian: the follow_light task — Sims' (1994) following: in several trials, each from birth,
+// the light the photosensors see is put in places around the creature, the trials' first
+// bearings turned evenly round, and the fitness is the average speed at which the centre of
+// mass moves towards it. The turned trials take away what a fixed path would gain.
 #include "tasks/follow_light.hpp"
 
 #include "core/settings.hpp"
@@ -33,15 +34,21 @@ class FollowLightTask : public Task {
   }
   void run(Episode& episode) const override;
 
-  int light_positions = 4;    ///< places the light takes during the measured time, equal shares
+  int light_trials = 4;       ///< trials from birth, first bearings 360 / trials degrees apart
+  int light_positions = 2;    ///< places the light takes in a trial, equal shares of its time
   double light_distance = 5;  ///< m from the centre of mass when the light is placed
   double light_bearing = 0;   ///< degrees from +x of the first position
   double light_turn = 90;     ///< degrees between successive bearings
 };
 
 void FollowLightTask::declareSettings(SettingsSchema& s) {
+  s.add("task.light_trials", light_trials,
+        "follow_light: trials, each from birth and measured for task.evaluation_time, their first "
+        "light bearings 360 / trials degrees apart (Sims: 'several trials')")
+      .require([this] { return light_trials >= 1 && light_trials <= 64; }, "must be in 1..64");
   s.add("task.light_positions", light_positions,
-        "follow_light: places the light takes, each for an equal share of task.evaluation_time")
+        "follow_light: places the light takes in a trial, each for an equal share of "
+        "task.evaluation_time")
       .require([this] { return light_positions >= 1 && light_positions <= 1000; },
                "must be in 1..1000");
   s.add("task.light_distance", light_distance,
@@ -57,21 +64,26 @@ void FollowLightTask::declareSettings(SettingsSchema& s) {
 }
 
 void FollowLightTask::run(Episode& episode) const {
-  // settle, then the light in each place in turn, the approach to it measured
+  // each trial: from birth, settle, then the light in each place in turn, the approach measured
   const EpisodeSettings& s = episode.settings();
-  if (!episode.settle(s.settle_time, EvalPhase::settle))
-    return;
   const double share = s.evaluation_time / light_positions;
   const double step = episode.simulation().timeStep();
   double approach = 0, seconds = 0;
-  for (int k = 0; k < light_positions; ++k) {
-    episode.moveLight(lightPosition(k, episode.simulation().centerOfMass(), light_distance,
-                                    light_bearing, light_turn));
-    ApproachJury jury;
-    if (!episode.run(share, EvalPhase::measure, {&jury}))
+  for (int trial = 0; trial < light_trials; ++trial) {
+    if (trial > 0)
+      episode.restart();
+    if (!episode.settle(s.settle_time, EvalPhase::settle))
       return;
-    approach += jury.value(episode.simulation());
-    seconds += static_cast<double>(std::llround(share / step)) * step;
+    const double first = light_bearing + trial * 360.0 / light_trials;
+    for (int k = 0; k < light_positions; ++k) {
+      episode.moveLight(
+          lightPosition(k, episode.simulation().centerOfMass(), light_distance, first, light_turn));
+      ApproachJury jury;
+      if (!episode.run(share, EvalPhase::measure, {&jury}))
+        return;
+      approach += jury.value(episode.simulation());
+      seconds += static_cast<double>(std::llround(share / step)) * step;
+    }
   }
   const double speed = seconds > 0 ? approach / seconds : 0;
   Outcome& outcome = episode.outcome();

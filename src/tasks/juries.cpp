@@ -6,12 +6,17 @@
 
 namespace cambrian {
 
+Vec3 trackedPosition(const Simulation& simulation, TrackedPoint point) {
+  return point == TrackedPoint::root ? simulation.world().partPosition(0)
+                                     : simulation.centerOfMass();
+}
+
 void DistanceJury::begin(const Simulation& simulation) {
-  start_ = simulation.centerOfMass();
+  start_ = trackedPosition(simulation, point_);
 }
 
 double DistanceJury::value(const Simulation& simulation) const {
-  Vec3 moved = simulation.centerOfMass() - start_;
+  Vec3 moved = trackedPosition(simulation, point_) - start_;
   return std::sqrt(moved.x * moved.x + moved.y * moved.y);
 }
 

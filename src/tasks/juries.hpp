@@ -23,14 +23,26 @@ class Jury {
   virtual double value(const Simulation& simulation) const = 0;
 };
 
-/// "distance": horizontal displacement of the centre of mass over the measured phase, m.
+/// The point of a body a distance is measured at.
+enum class TrackedPoint : std::uint8_t {
+  centre_of_mass,  ///< of the whole body (Sims)
+  root,            ///< the root part's centre (Chaumont et al.: "the center of mass of its root
+                   ///< block")
+};
+
+/// The world position of `point` of the simulated body.
+Vec3 trackedPosition(const Simulation& simulation, TrackedPoint point);
+
+/// "distance": horizontal displacement of the tracked point over the measured phase, m.
 class DistanceJury : public Jury {
  public:
+  explicit DistanceJury(TrackedPoint point = TrackedPoint::centre_of_mass) : point_(point) {}
   const char* name() const override { return "distance"; }
   void begin(const Simulation& simulation) override;
   double value(const Simulation& simulation) const override;
 
  private:
+  TrackedPoint point_;
   Vec3 start_;
 };
 

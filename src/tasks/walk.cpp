@@ -28,7 +28,8 @@ class WalkTask : public Task {
   void run(Episode& episode) const override;
 
   WalkNormalisation normalisation = WalkNormalisation::none;
-  double chaumont_k = 1.02;  ///< k in k^N
+  TrackedPoint distance_of = TrackedPoint::centre_of_mass;  ///< the point whose travel counts
+  double chaumont_k = 1.02;                                 ///< k in k^N
 };
 
 void WalkTask::declareSettings(SettingsSchema& s) {
@@ -37,6 +38,10 @@ void WalkTask::declareSettings(SettingsSchema& s) {
                {"chaumont", WalkNormalisation::chaumont},
                {"volume", WalkNormalisation::volume}},
               "walk fitness: none | chaumont | volume");
+  s.addChoice("task.distance_of", distance_of,
+              {{"centre_of_mass", TrackedPoint::centre_of_mass}, {"root", TrackedPoint::root}},
+              "walk: the point whose horizontal travel is the distance: centre_of_mass (Sims) | "
+              "root (Chaumont et al.: the root block's centre of mass)");
   s.add("task.chaumont_k", chaumont_k, "k of the k^N complexity bonus (chaumont normalisation)")
       .require([this] { return chaumont_k > 0 && std::isfinite(chaumont_k); },
                "must be > 0 and finite");
@@ -53,7 +58,7 @@ void WalkTask::run(Episode& episode) const {
       !episode.run(s.trial_time, EvalPhase::trial) ||
       !episode.settle(s.resettle_time, EvalPhase::resettle))
     return;
-  DistanceJury distance;
+  DistanceJury distance(distance_of);
   if (!episode.run(s.evaluation_time, EvalPhase::measure, {&distance}))
     return;
 

@@ -197,6 +197,76 @@ std::vector<double> run(NeuronFunction function, const std::vector<double>& a, d
   return out;
 }
 
+// Chaumont et al.'s functions (Table I) on known inputs: sumT passes a + b from the threshold
+// up, div gives 1 for b <= epsilon (negative b too), wav is b sin(a k + c) at step k
+TEST(Brain, ChaumontFunctionsOnKnownInputs) {
+  using F = NeuronFunction;
+  EXPECT_NEAR(evaluate(F::sum_above, 0.3, 0.4, 0, 0.7), 0.7, kTol);
+  EXPECT_EQ(evaluate(F::sum_above, 0.3, 0.39, 0, 0.7), 0.0);
+  EXPECT_NEAR(evaluate(F::sum_above, -2, 0.5, 0, -3), -1.5, kTol);
+  EXPECT_NEAR(evaluate(F::divide_or_one, 0.6, 0.3, 0), 2.0, kTol);
+  EXPECT_EQ(evaluate(F::divide_or_one, 0.6, 0, 0), 1.0);
+  EXPECT_EQ(evaluate(F::divide_or_one, 0.6, -0.5, 0), 1.0);
+  EXPECT_NEAR(evaluate(F::wave, 0.5, 0.8, 0.3), 0.8 * std::sin(0.3), kTol);  // step 0
+
+  TestPlan plan = planWithSensors(3);
+  plan.neurons.push_back(neuronOf(F::wave, {Wire{0, 1}, Wire{1, 1}, Wire{2, 1}}));
+  Brain brain(plan, 1.0 / 60);
+  brain.sensors()[0] = 0.5;
+  brain.sensors()[1] = 0.8;
+  brain.sensors()[2] = 0.3;
+  for (int k = 0; k < 7; ++k)
+    brain.step();
+  EXPECT_NEAR(brain.signals()[3], 0.8 * std::sin(0.5 * 6 + 0.3), kTol);  // the 7th step: k = 6
+  EXPECT_EQ(neuronArity(F::sum_above), 2);
+  EXPECT_EQ(neuronArity(F::divide_or_one), 2);
+  EXPECT_EQ(neuronArity(F::delay), 1);
+  EXPECT_EQ(neuronArity(F::wave), 3);
+}
+
+// mem: the input as it was n = round(|parameter|) steps ago (0 before), n in 1..16
+TEST(Brain, DelayGivesTheInputOfNStepsAgo) {
+  using F = NeuronFunction;
+  EXPECT_EQ(run(F::delay, {1, 2, 3, 4, 5, 6}, 3, 0.1), (std::vector<double>{0, 0, 0, 1, 2, 3}));
+  EXPECT_EQ(run(F::delay, {1, 2, 3}, -0.2, 0.1), (std::vector<double>{0, 1, 2}));  // at least 1
+  std::vector<double> ramp(20);
+  for (int k = 0; k < 20; ++k)
+    ramp[k] = k + 1;
+  EXPECT_EQ(run(F::delay, ramp, 100, 0.1)[17], 2.0);  // at most 16 steps
+
+  // two delay neurons keep rings of their own, and reset empties them
+  TestPlan plan = planWithSensors(1);
+  plan.neurons.push_back(neuronOf(F::delay, {Wire{0, 1}, Wire{}, Wire{}}, 2));
+  plan.neurons.push_back(neuronOf(F::delay, {Wire{0, -1}, Wire{}, Wire{}}, 1));
+  Brain brain(plan, 0.1);
+  for (double value : {1.0, 2.0, 3.0}) {
+    brain.sensors()[0] = value;
+    brain.step();
+  }
+  EXPECT_EQ(brain.signals()[1], 1.0);
+  EXPECT_EQ(brain.signals()[2], -2.0);
+  brain.reset();
+  brain.step();
+  EXPECT_EQ(brain.signals()[1], 0.0);
+  EXPECT_EQ(brain.signals()[2], 0.0);
+}
+
+// Chaumont's network keeps every input and output within +-1 (signal_bound 1)
+TEST(Brain, ChaumontBoundKeepsSignalsWithinOne) {
+  auto network = std::make_shared<NeuralNetworkPlan>();
+  network->sensor_count = 2;
+  network->signal_bound = 1;
+  network->neurons.push_back(neuronOf(NeuronFunction::sum, {Wire{0, 1}, Wire{1, 1}, Wire{}}));
+  network->neurons.push_back(neuronOf(NeuronFunction::product, {Wire{0, 5}, Wire{1, 1}, Wire{}}));
+  std::unique_ptr<Controller> brain = network->build(0.1, 2, 0);
+  std::vector<double> sensors{0.8, 0.7}, drives;
+  brain->step(sensors, drives);
+  EXPECT_EQ(brain->signals()[2], 1.0);          // 1.5, bounded
+  EXPECT_NEAR(brain->signals()[3], 0.7, kTol);  // 5 x 0.8 read as 1, times 0.7
+  network->signal_bound = 0;
+  EXPECT_THROW(network->build(0.1, 2, 0), Error);
+}
+
 TEST(Brain, StatefulFunctionsKeepTheirState) {
   using F = NeuronFunction;
   const auto integrate = run(F::integrate, {2, 2, 2, -1}, 0, 0.1);

@@ -9,7 +9,7 @@
 #   variants:  at NP ranks, evolutions through the other code paths: jump, explicit torques,
 #              self-collision, Chaumont's normalisation and rest rule, tournament / rank / sus
 #              selection, unconnected nodes collected, seed genomes, Sims' swimming in water and
-#              following a light
+#              following a light, Chaumont et al.'s walk (hinges only, their neuron set)
 #   simulate:  `cambrian simulate` on the hand-written creatures and random seeds (walk, jump,
 #              swim, follow_light, synthetic): status, fitness, every measure and the step count
 #   resume_v1: a run checkpointed by the cambrian of before the plug-in renovation
@@ -119,6 +119,8 @@ case $mode in
     evolve swim --config "$source_dir/jobs/experiments/sims/swim.ini" "${common[@]}" --seed 10
     evolve follow_light --config "$source_dir/jobs/experiments/sims/follow-light.ini" \
       "${common[@]}" --seed 11
+    evolve chaumont_walk --config "$source_dir/jobs/experiments/chaumont/walk.ini" \
+      "${common[@]}" --seed 12
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do

@@ -271,6 +271,31 @@ TEST(Simulation, PhotosensorsPointAtTheLight) {
   EXPECT_NEAR(simulation.sensors()[2], 1.0, 1e-3);
 }
 
+// a block resting on the ground: its contact sensor reads 1, and of its six face sensors only
+// the bottom face (-z, face 5) reads 1, the others -1; a block lying on its +x face reads face 0
+TEST(Simulation, ContactSensorsPerFaceSeeTheTouchingFace) {
+  for (const bool on_side : {false, true}) {
+    BodyPlan plan;
+    plan.parts.push_back(box({0.3, 0.2, 0.1}, {0, 0, 0}));
+    if (on_side)
+      plan.parts[0].pose.rotation = quatFromEuler({0, kPi / 2, 0});  // +x points down
+    plan.sensors.push_back({SensorKind::contact, 0, 0});
+    for (int face = 0; face < 6; ++face)
+      plan.sensors.push_back({SensorKind::contact_face, 0, face});
+    Environment environment;
+    Simulation simulation(plan, nullptr, environment, PhysicsSettings{});
+    ASSERT_EQ(simulation.status(), EvalStatus::ok);
+    for (int s = 0; s < 60; ++s)
+      simulation.step(false);
+    simulation.step(false);
+    const std::vector<double>& seen = simulation.sensors();
+    EXPECT_EQ(seen[0], 1.0);
+    const int touching = on_side ? 0 : 5;
+    for (int face = 0; face < 6; ++face)
+      EXPECT_EQ(seen[1 + face], face == touching ? 1.0 : -1.0) << "face " << face;
+  }
+}
+
 // each photosensor sees the light's direction in its own part's frame, and follows the light
 // when it moves: a root turned 90 degrees about z (its x axis along world y) and a child
 // turned 90 degrees about y, in a world without gravity so nothing moves

@@ -540,5 +540,23 @@ TEST(Evaluate, RestCheckSettlesUntilAtRest) {
                                       std::llround(task.resettle_time / dt));
 }
 
+// task.distance_of = root (Chaumont et al.): the distance is the horizontal travel of the root
+// part's centre over the measured phase, as the frames show it
+TEST(Evaluate, DistanceOfTheRootIsTheRootsTravel) {
+  Genome walker = creature("walker4.genome");
+  PhaseRecorder frames;
+  Outcome root = evaluateGraph(walker, shortWalk({{"task.distance_of", "root"}}), &frames);
+  ASSERT_EQ(root.status, EvalStatus::ok) << root.message;
+  const auto first = std::find(frames.phases.begin(), frames.phases.end(), EvalPhase::measure);
+  ASSERT_NE(first, frames.phases.end());
+  const Vec3 start =
+      frames.positions[static_cast<std::size_t>(first - frames.phases.begin()) - 1][0];
+  const Vec3 moved = frames.positions.back()[0] - start;
+  EXPECT_NEAR(root.measure("distance"), std::hypot(moved.x, moved.y), 1e-12);
+  Outcome centre = evaluateGraph(walker, shortWalk());
+  EXPECT_NE(root.measure("distance"), centre.measure("distance"));
+  EXPECT_EQ(root.steps, centre.steps);
+}
+
 }  // namespace
 }  // namespace cambrian

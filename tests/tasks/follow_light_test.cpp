@@ -51,10 +51,12 @@ TEST(FollowLight, APassiveBodyApproachesNothing) {
 // light ahead of it it scores its approach speed, with the light behind it moves away (a negative
 // approach) and scores 0
 TEST(FollowLight, TowardsScoresAndAwayScoresZero) {
-  Outcome ahead =
-      follow("walker4.genome", {{"task.light_positions", "1"}, {"task.light_bearing", "0"}});
-  Outcome behind =
-      follow("walker4.genome", {{"task.light_positions", "1"}, {"task.light_bearing", "180"}});
+  Outcome ahead = follow(
+      "walker4.genome",
+      {{"task.light_trials", "1"}, {"task.light_positions", "1"}, {"task.light_bearing", "0"}});
+  Outcome behind = follow(
+      "walker4.genome",
+      {{"task.light_trials", "1"}, {"task.light_positions", "1"}, {"task.light_bearing", "180"}});
   ASSERT_EQ(ahead.status, EvalStatus::ok) << ahead.message;
   ASSERT_EQ(behind.status, EvalStatus::ok) << behind.message;
   EXPECT_GT(ahead.measure("approach"), 0.1);
@@ -62,6 +64,20 @@ TEST(FollowLight, TowardsScoresAndAwayScoresZero) {
   EXPECT_DOUBLE_EQ(ahead.fitness, ahead.measure("approach") / 4);
   EXPECT_DOUBLE_EQ(ahead.measure("approach_speed"), ahead.measure("approach") / 4);
   EXPECT_EQ(behind.fitness, 0);
+}
+
+// the trials start from birth with their first bearings turned evenly round, so a walker that
+// does not look at the light, and would score its full speed with the light always ahead, scores
+// little over four trials; each trial takes its own settle and measured steps
+TEST(FollowLight, TurnedTrialsTakeAwayWhatAFixedPathGains) {
+  Outcome ahead =
+      follow("walker4.genome", {{"task.light_trials", "1"}, {"task.light_positions", "1"}});
+  Outcome one = follow("walker4.genome", {{"task.light_trials", "1"}});
+  Outcome four = follow("walker4.genome", {});
+  ASSERT_EQ(four.status, EvalStatus::ok) << four.message;
+  EXPECT_GT(ahead.measure("approach_speed"), 0.05);
+  EXPECT_LT(std::abs(four.measure("approach_speed")), 0.3 * ahead.measure("approach_speed"));
+  EXPECT_EQ(four.steps, 4 * one.steps);
 }
 
 }  // namespace

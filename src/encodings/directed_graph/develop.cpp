@@ -407,6 +407,7 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
   Creature creature;
   BodyPlan& plan = creature.body;
   auto network = std::make_shared<NeuralNetworkPlan>();
+  network->signal_bound = limits.neuron_set == NeuronSet::chaumont ? 1.0 : 1000.0;
   std::vector<NeuronPlan>& neurons = network->neurons;
 
   // parts and joints
@@ -414,7 +415,8 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
   const std::vector<std::vector<int>> first_child = embryo.grow(plan);
   const int part_count = static_cast<int>(plan.parts.size());
 
-  // sensors: per part its joint angles then contact; then the creature's three photo sensors
+  // sensors: per part its joint angles then its contact (or six, one per face); then the
+  // creature's three photo sensors
   Ranges ranges;
   ranges.sensor_first.resize(part_count);
   ranges.sensor_count.resize(part_count);
@@ -423,7 +425,12 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
     for (int d = 0; d < degreesOfFreedom(plan.parts[i].joint); ++d) {
       plan.sensors.push_back(SensorPlan{SensorKind::joint_angle, i, d});
     }
-    plan.sensors.push_back(SensorPlan{SensorKind::contact, i, 0});
+    if (limits.contact_sensors == ContactSensors::per_face) {
+      for (int face = 0; face < 6; ++face)
+        plan.sensors.push_back(SensorPlan{SensorKind::contact_face, i, face});
+    } else {
+      plan.sensors.push_back(SensorPlan{SensorKind::contact, i, 0});
+    }
     ranges.sensor_count[i] = static_cast<int>(plan.sensors.size()) - ranges.sensor_first[i];
   }
   ranges.photo_first = static_cast<int>(plan.sensors.size());

@@ -90,6 +90,14 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
         "rigid revolute, one degree of freedom at most)")
       .require([this] { return parseJointTypes(); },
                "must name one or more of rigid, revolute, universal, spherical, each once");
+  s.addChoice("genome.contact_sensors", g.contact_sensors,
+              {{"part", ContactSensors::per_part}, {"face", ContactSensors::per_face}},
+              "each part's contact sensors: part (one, 1 touched / 0) | face (six, one per face, "
+              "1 touched / -1: Sims, Chaumont et al.)");
+  s.addChoice("genome.neuron_set", g.neuron_set,
+              {{"sims", NeuronSet::sims}, {"chaumont", NeuronSet::chaumont}},
+              "the neuron functions genomes use: sims (Sims' and cambrian's first 24) | chaumont "
+              "(Chaumont et al.'s cst sum mul sumT div mem wav, every signal within +-1)");
 
   // [evolution]: the structural mutation rates of the graph (their historic keys)
   MutationSettings& m = mutation;

@@ -7,6 +7,7 @@
 #include "encodings/directed_graph/genome.hpp"
 
 #include <cstdint>
+#include <span>
 
 namespace cambrian::graph {
 
@@ -62,6 +63,15 @@ inline JointType allowedJointType(const GenomeLimits& limits, std::uint64_t inde
 
 /// Number of NeuronFunction values.
 constexpr int kNeuronFunctionCount = static_cast<int>(NeuronFunction::count_);
+/// The functions of `limits`' neuron set, in the order draws index them (the sims set: every
+/// function cambrian had before the chaumont set, in enumeration order, so its draws are those of
+/// before the set existed).
+std::span<const NeuronFunction> neuronSet(const GenomeLimits& limits);
+/// Whether `function` is in `limits`' neuron set.
+bool neuronFunctionAllowed(const GenomeLimits& limits, NeuronFunction function);
+/// The name of a neuron set ("sims", "chaumont").
+const char* neuronSetName(NeuronSet set);
+
 /// Number of SignalSource values.
 constexpr int kSignalSourceCount = 7;
 

@@ -98,6 +98,18 @@ struct Genome {
   friend bool operator==(const Genome&, const Genome&) = default;
 };
 
+/// The neuron functions genomes may use (genome.neuron_set).
+enum class NeuronSet : std::uint8_t {
+  sims,      ///< Sims' functions and the others cambrian had first (constant .. oscillate_saw)
+  chaumont,  ///< Chaumont et al.'s Table I: cst sum mul sumT div mem wav, signals within +-1
+};
+
+/// The contact sensors development gives each part (genome.contact_sensors).
+enum class ContactSensors : std::uint8_t {
+  per_part,  ///< one: 1 when anything touches the part, else 0
+  per_face,  ///< six, one per face: 1 when touched, else -1 (Sims; Chaumont et al.'s sen)
+};
+
 /// Limits that keep creatures finite. Defaults follow Chaumont et al. and Sims.
 struct GenomeLimits {
   int max_nodes = 20;           ///< genes (graph nodes)
@@ -116,6 +128,11 @@ struct GenomeLimits {
   /// Bit t set: JointType t may appear (genome.joint_types); Chaumont et al. allow only the
   /// one-degree-of-freedom types. Random genomes and every operator keep to it.
   std::uint8_t joint_types = 0xF;
+  /// The neuron functions random genomes and mutation draw from and validation accepts; the
+  /// chaumont set also bounds every signal of the network to +-1.
+  NeuronSet neuron_set = NeuronSet::sims;
+  /// Each part's contact sensors.
+  ContactSensors contact_sensors = ContactSensors::per_part;
 };
 
 //---------------------------------------------------------------- operations

@@ -52,7 +52,8 @@ class Perturber {
   void neuron(NeuronGene& n) {
     // a new function may read more inputs: give it random ones
     if (rng_.bernoulli(settings_.parameter_rate)) {
-      n.function = static_cast<NeuronFunction>(rng_.below(kNeuronFunctionCount));
+      const std::span<const NeuronFunction> set = neuronSet(limits_);
+      n.function = set[rng_.below(set.size())];
       int wanted = std::min(neuronArity(n.function), std::max(0, limits_.max_inputs));
       while (static_cast<int>(n.inputs.size()) < wanted) {
         n.inputs.push_back(randomNeuronInput(limits_, rng_));

@@ -50,7 +50,8 @@ NeuronInput randomNeuronInput(const GenomeLimits& limits, Rng& rng) {
 
 NeuronGene randomNeuronGene(const GenomeLimits& limits, Rng& rng) {
   NeuronGene neuron;
-  neuron.function = static_cast<NeuronFunction>(rng.below(kNeuronFunctionCount));
+  const std::span<const NeuronFunction> set = neuronSet(limits);
+  neuron.function = set[rng.below(set.size())];
   // oscillators read their frequency from the parameter: keep it moderate
   neuron.parameter = rng.uniform(-4.0, 4.0);
   int inputs = std::min(neuronArity(neuron.function), std::max(0, limits.max_inputs));

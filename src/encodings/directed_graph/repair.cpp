@@ -34,6 +34,10 @@ void fitNeurons(std::vector<NeuronGene>& neurons, int limit, const GenomeLimits&
   truncate(neurons, limit);
   for (NeuronGene& neuron : neurons) {
     neuron.function = wrapEnum(neuron.function, kNeuronFunctionCount);
+    if (!neuronFunctionAllowed(limits, neuron.function)) {
+      const std::span<const NeuronFunction> set = neuronSet(limits);
+      neuron.function = set[static_cast<std::size_t>(neuron.function) % set.size()];
+    }
     neuron.parameter =
         clampToRange(neuron.parameter, -kNeuronParameterBound, kNeuronParameterBound);
     truncate(neuron.inputs, limits.max_inputs);

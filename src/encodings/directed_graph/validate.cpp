@@ -58,6 +58,10 @@ void checkInput(const std::string& where, const NeuronInput& input, const Genome
 // one neuron: function, parameter and inputs
 void checkNeuron(const std::string& where, const NeuronGene& neuron, const GenomeLimits& limits) {
   checkEnum(where, "function", static_cast<int>(neuron.function), kNeuronFunctionCount);
+  if (!neuronFunctionAllowed(limits, neuron.function)) {
+    throw GenomeError(where + ": function " + neuronFunctionName(neuron.function) +
+                      " is not in genome.neuron_set " + neuronSetName(limits.neuron_set));
+  }
   checkFixedRange(where, "parameter", neuron.parameter, -kNeuronParameterBound,
                   kNeuronParameterBound);
   checkCount(where, "inputs", neuron.inputs.size(), limits.max_inputs, "genome.max_inputs");

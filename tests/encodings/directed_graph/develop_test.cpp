@@ -646,5 +646,24 @@ TEST(Develop, BrokenGenomesAndLimitsThrowNamingTheField) {
   EXPECT_THROW(flatDevelop(fourLeggedGenome(), limits), ConfigError);
 }
 
+// genome.contact_sensors = face: six contact_face sensors (faces 0..5) in place of each part's
+// contact sensor, after its joint angles; the photo sensors still last
+TEST(Develop, ContactSensorsPerFace) {
+  Genome genome = creature("pole");
+  GenomeLimits limits;
+  limits.contact_sensors = ContactSensors::per_face;
+  const Creature creature = develop(genome, limits);
+  const std::vector<SensorPlan>& sensors = creature.body.sensors;
+  ASSERT_EQ(creature.body.parts.size(), 2u);
+  ASSERT_EQ(sensors.size(), 6u + 1u + 6u + 3u);  // root faces; child angle and faces; photo
+  for (int face = 0; face < 6; ++face) {
+    EXPECT_EQ(sensors[face], (SensorPlan{SensorKind::contact_face, 0, face}));
+    EXPECT_EQ(sensors[7 + face], (SensorPlan{SensorKind::contact_face, 1, face}));
+  }
+  EXPECT_EQ(sensors[6].kind, SensorKind::joint_angle);
+  EXPECT_EQ(sensors[13].kind, SensorKind::photo);
+  EXPECT_EQ(develop(genome, GenomeLimits{}).body.sensors.size(), 1u + 2u + 3u);
+}
+
 }  // namespace
 }  // namespace cambrian::graph

@@ -203,5 +203,54 @@ TEST(DirectedGraphEncoding, OneDegreeOfFreedomJointsOnlyHoldUnderEveryOperator) 
   }
 }
 
+// genome.neuron_set = chaumont: random genomes and mutants use only Chaumont et al.'s functions
+// (each of them), their networks are bounded to +-1, and a Sims function is refused by name
+TEST(DirectedGraphEncoding, ChaumontNeuronSetHoldsUnderEveryOperator) {
+  DirectedGraphEncoding encoding;
+  SettingsSchema schema;
+  encoding.declareSettings(schema);
+  schema.set("genome.neuron_set", "chaumont");
+  schema.check();
+  const std::set<NeuronFunction> chaumont{NeuronFunction::constant,      NeuronFunction::sum,
+                                          NeuronFunction::product,       NeuronFunction::sum_above,
+                                          NeuronFunction::divide_or_one, NeuronFunction::delay,
+                                          NeuronFunction::wave};
+  std::set<NeuronFunction> seen;
+  auto collect = [&](const Genotype& genome, std::uint64_t i) {
+    EXPECT_NO_THROW(encoding.validate(genome)) << i;
+    for (const PartGene& node : graphGenome(genome).nodes)
+      for (const NeuronGene& neuron : node.neurons)
+        seen.insert(neuron.function);
+    for (const NeuronGene& neuron : graphGenome(genome).brain)
+      seen.insert(neuron.function);
+  };
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    Genotype genome = encoding.random(4, 0, i);
+    collect(genome, i);
+    Rng rng(7, RngPurpose::test, 0, i);
+    collect(encoding.tidy(encoding.mutate(genome, 1.0, rng)), i);
+    Creature creature = encoding.develop(genome);
+    const auto* network = dynamic_cast<const NeuralNetworkPlan*>(creature.controller.get());
+    if (network) {
+      EXPECT_EQ(network->signal_bound, 1.0);
+    }
+  }
+  EXPECT_EQ(seen, chaumont);
+
+  Genome sims;
+  sims.nodes.resize(1);
+  NeuronGene sine;
+  sine.function = NeuronFunction::sin;
+  sims.nodes[0].neurons.push_back(sine);
+  try {
+    encoding.validate(makeGenotype(sims));
+    ADD_FAILURE() << "sin passed genome.neuron_set = chaumont";
+  } catch (const GenomeError& error) {
+    EXPECT_NE(std::string(error.what()).find("function sin is not in genome.neuron_set chaumont"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace cambrian::graph

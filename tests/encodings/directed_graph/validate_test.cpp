@@ -100,7 +100,7 @@ TEST(ValidateGenome, EachOutOfRangeFieldIsNamed) {
       {[](Genome& g) { g.nodes[1].neurons.resize(7); },
        "node 1: 7 neurons exceed genome.max_neurons_per_node"},
       {[](Genome& g) { g.nodes[1].neurons[0].function = NeuronFunction::count_; },
-       "node 1: neuron 0: function = 24"},
+       "node 1: neuron 0: function = 28"},
       {[](Genome& g) { g.nodes[1].neurons[0].parameter = 11; },
        "node 1: neuron 0: parameter = 11 is above"},
       {[](Genome& g) { g.nodes[1].neurons[0].inputs.resize(4); },
