@@ -205,10 +205,12 @@ check_complete() {
 
 # resume: a chain of six jobs (afterany) with a short time limit: the first is stopped by its
 # signal, the next ones by --max-hours (60 s limit less a 50 s margin: about 10 s of a run
-# that needs at least 18 s of evaluations), one completes the run and cancels the rest; the
-# history equals a straight run's
+# that needs at least 12.6 s of evaluations, so the second job cannot finish it however fast
+# the machine, and four jobs have three times the time it needs, however slow: 100 generations
+# once left a sanitizer build 6 short), one completes the run and cancels the rest; the history
+# equals a straight run's
 check_resume() {
-  local total=100
+  local total=70
   write_config "$work/resume.ini" $total 15000
   # the straight run, in process, beside the chain (results do not depend on rank count)
   "$cambrian" evolve --config "$work/resume.ini" --out "$work/straight" --quiet \
