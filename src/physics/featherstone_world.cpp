@@ -452,8 +452,15 @@ struct FeatherstoneObjects {
   std::vector<std::unique_ptr<btRigidBody>> objects;  // Environment::objects order
   bool self_contacts = true;  // parts touch each other (always at the birth check)
   bool has_ground = false;    // the ground plane is in the world
-  mutable btAlignedObjectArray<btVector3> omega, velocity;  // link velocities' scratch
-  btAlignedObjectArray<btQuaternion> world_to_local;        // collider updates' scratch
+  mutable btAlignedObjectArray<btVector3> omega, velocity;  // linkVelocities()
+  // correctMomentum's scratch: each body's mass, centre, velocity, spin and world inertia
+  struct BodyState {
+    double mass = 0;
+    btVector3 centre, velocity, spin;
+    btMatrix3x3 inertia;
+  };
+  std::vector<BodyState> states;
+  btAlignedObjectArray<btQuaternion> world_to_local;  // collider updates' scratch
   btAlignedObjectArray<btVector3> local_origin;
 
   ~FeatherstoneObjects() {
@@ -474,6 +481,15 @@ struct FeatherstoneObjects {
       world.removeCollisionObject(&ground);
   }
 };
+
+// every body's angular and linear velocity in its own frame into omega and velocity (index 0 the
+// base, k + 1 link k; Bullet's link frames sit at the bodies' centres)
+void linkVelocities(const FeatherstoneObjects& b) {
+  const int links = b.body->getNumLinks();
+  b.omega.resize(links + 1);
+  b.velocity.resize(links + 1);
+  b.body->compTreeLinkVelocities(&b.omega[0], &b.velocity[0]);
+}
 
 FeatherstoneWorld::FeatherstoneWorld(const BodyPlan& plan, const Environment& environment,
                                      const PhysicsSettings& physics, double birth_height)
@@ -859,10 +875,7 @@ void FeatherstoneWorld::applyDrag(double substep) {
   // centres): the drag there, turned into the world frame Bullet's applied forces are in
   FeatherstoneObjects& b = *bullet_;
   btMultiBody& body = *b.body;
-  const int links = body.getNumLinks();
-  b.omega.resize(links + 1);
-  b.velocity.resize(links + 1);
-  body.compTreeLinkVelocities(&b.omega[0], &b.velocity[0]);
+  linkVelocities(b);
   const std::size_t parts = plan_.parts.size();
   drag_force_ = drag_torque_ = Vec3{};
   for (std::size_t i = 0; i < parts; ++i) {
@@ -906,31 +919,29 @@ void FeatherstoneWorld::applyDrag(double substep) {
 }
 
 void FeatherstoneWorld::correctMomentum(double substep) {
-  // every body's mass, centre, velocity, angular velocity and world inertia (Bullet's link frames
-  // sit at the bodies' centres)
+  // every body's mass, centre, velocity, angular velocity and world inertia, gathered once
   FeatherstoneObjects& b = *bullet_;
   btMultiBody& body = *b.body;
   const int links = body.getNumLinks();
-  b.omega.resize(links + 1);
-  b.velocity.resize(links + 1);
-  body.compTreeLinkVelocities(&b.omega[0], &b.velocity[0]);
-  auto state = [&](int k, double& mass, btVector3& centre, btVector3& velocity, btVector3& spin,
-                   btMatrix3x3& inertia) {
+  linkVelocities(b);
+  b.states.resize(links + 1);
+  for (int k = 0; k <= links; ++k) {
+    FeatherstoneObjects::BodyState& state = b.states[k];
     btMatrix3x3 basis;
     btVector3 principal;
     if (k == 0) {
-      mass = body.getBaseMass();
-      centre = body.getBasePos();
-      velocity = body.getBaseVel();
-      spin = body.getBaseOmega();
+      state.mass = body.getBaseMass();
+      state.centre = body.getBasePos();
+      state.velocity = body.getBaseVel();
+      state.spin = body.getBaseOmega();
       basis = btMatrix3x3(body.getWorldToBaseRot().inverse());
       principal = body.getBaseInertia();
     } else {
       const int link = k - 1;
-      mass = body.getLinkMass(link);
-      centre = body.localPosToWorld(link, btVector3(0, 0, 0));
-      velocity = body.localDirToWorld(link, b.velocity[k]);
-      spin = body.localDirToWorld(link, b.omega[k]);
+      state.mass = body.getLinkMass(link);
+      state.centre = body.localPosToWorld(link, btVector3(0, 0, 0));
+      state.velocity = body.localDirToWorld(link, b.velocity[k]);
+      state.spin = body.localDirToWorld(link, b.omega[k]);
       for (int axis = 0; axis < 3; ++axis) {
         btVector3 unit(0, 0, 0);
         unit[axis] = 1;
@@ -940,32 +951,28 @@ void FeatherstoneWorld::correctMomentum(double substep) {
       }
       principal = body.getLinkInertia(link);
     }
-    inertia = basis.scaled(principal) * basis.transpose();
-  };
+    state.inertia = basis.scaled(principal) * basis.transpose();
+  }
 
   // the centre of mass and the momentum
-  double mass = 0;
-  btVector3 centre(0, 0, 0), momentum(0, 0, 0), velocity, spin, position;
-  btMatrix3x3 own;
-  for (int k = 0; k <= links; ++k) {
-    state(k, mass, position, velocity, spin, own);
-    centre += mass * position;
-    momentum += mass * velocity;
+  btVector3 centre(0, 0, 0), momentum(0, 0, 0);
+  for (const FeatherstoneObjects::BodyState& state : b.states) {
+    centre += state.mass * state.centre;
+    momentum += state.mass * state.velocity;
   }
   centre /= total_mass_;
 
   // the angular momentum about the centre and the inertia of the whole body about it
   btVector3 angular(0, 0, 0);
   btMatrix3x3 inertia(0, 0, 0, 0, 0, 0, 0, 0, 0);
-  for (int k = 0; k <= links; ++k) {
-    state(k, mass, position, velocity, spin, own);
-    const btVector3 r = position - centre;
-    angular += mass * r.cross(velocity) + own * spin;
+  for (const FeatherstoneObjects::BodyState& state : b.states) {
+    const btVector3 r = state.centre - centre;
+    angular += state.mass * r.cross(state.velocity) + state.inertia * state.spin;
     const btMatrix3x3 offset(r.dot(r) - r.x() * r.x(), -r.x() * r.y(), -r.x() * r.z(),
                              -r.y() * r.x(), r.dot(r) - r.y() * r.y(), -r.y() * r.z(),
                              -r.z() * r.x(), -r.z() * r.y(), r.dot(r) - r.z() * r.z());
     for (int row = 0; row < 3; ++row)
-      inertia[row] += own[row] + mass * offset[row];
+      inertia[row] += state.inertia[row] + state.mass * offset[row];
   }
   if (substep == 0) {  // birth: the state to keep to
     centre_ = fromBt(centre);
@@ -1009,9 +1016,7 @@ double FeatherstoneWorld::mechanicalEnergy() const {
   const FeatherstoneObjects& b = *bullet_;
   const btMultiBody& body = *b.body;
   const int links = body.getNumLinks();
-  b.omega.resize(links + 1);
-  b.velocity.resize(links + 1);
-  body.compTreeLinkVelocities(&b.omega[0], &b.velocity[0]);
+  linkVelocities(b);
   auto kinetic = [&](int k, double mass, const btVector3& inertia) {
     const btVector3& w = b.omega[k];
     return 0.5 * (mass * b.velocity[k].length2() + w.x() * w.x() * inertia.x() +

@@ -45,14 +45,7 @@ TestCreature hinged(double command) {
   TestCreature creature;
   BodyPlan& plan = creature.plan;
   plan.parts.push_back(box({0.4, 0.2, 0.1}, {0, 0, 0}));
-  PartPlan child = box({0.3, 0.1, 0.1}, {0.35, 0, 0}, 0);
-  child.joint = JointType::revolute;
-  child.pivot_in_parent = {0.2, 0, 0};
-  child.pivot_in_child = {-0.15, 0, 0};
-  child.joint_limit = {1.0, 1.0, 1.0};
-  child.cross_section = 0.01;
-  child.connection = 0;
-  plan.parts.push_back(child);
+  plan.parts.push_back(test::hingedChild());
   plan.sensors.push_back({SensorKind::joint_angle, 1, 0});
   plan.sensors.push_back({SensorKind::contact, 0, 0});
   plan.sensors.push_back({SensorKind::contact, 1, 0});

@@ -162,12 +162,7 @@ TEST(ViscousDrag, APlateSinksAtItsTerminalSpeed) {
 TEST(ViscousDrag, APassiveBodyInWaterStaysExactlyAtRest) {
   BodyPlan plan;
   plan.parts.push_back(box({0.4, 0.2, 0.1}, {0, 0, 0}));
-  PartPlan child = box({0.3, 0.1, 0.1}, {0.35, 0, 0}, 0);
-  child.joint = JointType::revolute;
-  child.pivot_in_parent = {0.2, 0, 0};
-  child.pivot_in_child = {-0.15, 0, 0};
-  child.joint_limit = {1.0, 1.0, 1.0};
-  plan.parts.push_back(child);
+  plan.parts.push_back(test::hingedChild());
   InWater water(plan, 100, 0);
   const Vec3 start = water.simulation.centerOfMass();
   for (int s = 0; s < 1200; ++s)

@@ -407,7 +407,8 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
   Creature creature;
   BodyPlan& plan = creature.body;
   auto network = std::make_shared<NeuralNetworkPlan>();
-  network->signal_bound = limits.neuron_set == NeuronSet::chaumont ? 1.0 : 1000.0;
+  if (limits.neuron_set == NeuronSet::chaumont)
+    network->signal_bound = 1;  // Chaumont et al.: every signal within [-1, 1]
   std::vector<NeuronPlan>& neurons = network->neurons;
 
   // parts and joints

@@ -8,32 +8,14 @@ namespace cambrian::graph {
 
 namespace {
 
-// every function cambrian had before the chaumont set, in enumeration order
-constexpr std::array<NeuronFunction, 24> kSimsSet = {NeuronFunction::constant,
-                                                     NeuronFunction::sum,
-                                                     NeuronFunction::product,
-                                                     NeuronFunction::divide,
-                                                     NeuronFunction::sum_threshold,
-                                                     NeuronFunction::greater_than,
-                                                     NeuronFunction::sign_of,
-                                                     NeuronFunction::min,
-                                                     NeuronFunction::max,
-                                                     NeuronFunction::abs,
-                                                     NeuronFunction::if_positive,
-                                                     NeuronFunction::interpolate,
-                                                     NeuronFunction::sin,
-                                                     NeuronFunction::cos,
-                                                     NeuronFunction::atan,
-                                                     NeuronFunction::log,
-                                                     NeuronFunction::expt,
-                                                     NeuronFunction::sigmoid,
-                                                     NeuronFunction::integrate,
-                                                     NeuronFunction::differentiate,
-                                                     NeuronFunction::smooth,
-                                                     NeuronFunction::memory,
-                                                     NeuronFunction::oscillate_wave,
-                                                     NeuronFunction::oscillate_saw};
-static_assert(static_cast<int>(NeuronFunction::oscillate_saw) == 23);
+// every function cambrian had before the chaumont set: the enumeration up to oscillate_saw
+constexpr std::size_t kSimsCount = static_cast<std::size_t>(NeuronFunction::oscillate_saw) + 1;
+constexpr std::array<NeuronFunction, kSimsCount> kSimsSet = [] {
+  std::array<NeuronFunction, kSimsCount> set{};
+  for (std::size_t i = 0; i < kSimsCount; ++i)
+    set[i] = static_cast<NeuronFunction>(i);
+  return set;
+}();
 
 // Chaumont et al. 2007, Table I: cst, sum, mul, sumT, div, mem, wav (sen and eff are the
 // sensors and effectors)
