@@ -61,8 +61,8 @@ struct PartPlan {
   Quat parent_to_child;                ///< this part's frame relative to the parent's frame
   std::array<Vec3, 3> axes{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  ///< in this part's frame
   Vec3 joint_limit;          ///< symmetric limit per degree of freedom, radians (prismatic: m)
-  double cross_section = 0;  ///< m^2, smaller of the two faces meeting at the joint; physics
-                             ///< turns it into the joint's maximum torque
+  double cross_section = 0;  ///< m^2, a face meeting at the joint (genome.strength_section);
+                             ///< physics turns it into the joint's maximum torque
   bool reflected = false;    ///< made through a reflected connection
 };
 
@@ -93,12 +93,34 @@ struct SensorPlan {
   friend bool operator==(const SensorPlan&, const SensorPlan&) = default;
 };
 
-/// Drives degree of freedom `dof` of the joint between `part` and its parent: the controller's
-/// command in [-1, 1] times the joint's strength.
+/// What an effector does with its command.
+enum class EffectorKind : std::uint8_t {
+  joint,    ///< drives degree of freedom `dof` of the joint between `part` and its parent
+  release,  ///< lets go of held object `dof` once the command exceeds kReleaseCommand, for good
+};
+
+/// The command above which a release effector lets go (Chaumont et al.'s ignition).
+constexpr double kReleaseCommand = 0.5;
+
+/// One controller output: a joint's degree of freedom (the command in [-1, 1] times the joint's
+/// strength) or the release of a held object.
 struct EffectorPlan {
   int part = 0;
   int dof = 0;
+  EffectorKind kind = EffectorKind::joint;
   friend bool operator==(const EffectorPlan&, const EffectorPlan&) = default;
+};
+
+/// A block the creature holds at birth and may let go of (Chaumont et al.'s projectile): not a
+/// part (no joint, sensors or neurons), fixed to part `part` until its release effector fires,
+/// then a free body of the world.
+struct HeldObject {
+  int part = 0;  ///< the part that holds it
+  PartShape shape = PartShape::box;
+  Vec3 size{0.2, 0.2, 0.2};  ///< full size, m (see PartShape)
+  double mass = 8;           ///< kg
+  Material material;
+  Transform pose;  ///< in the holding part's frame
 };
 
 /// The developed body.
@@ -107,7 +129,8 @@ struct BodyPlan {
   std::vector<LoopJoint> loops;
   std::vector<SensorPlan> sensors;
   std::vector<EffectorPlan> effectors;
-  bool truncated = false;  ///< development stopped at its part limit
+  std::vector<HeldObject> held;  ///< objects held at birth (a catapult's projectile)
+  bool truncated = false;        ///< development stopped at its part limit
 
   /// Joints of the tree plus loop joints.
   int jointCount() const;

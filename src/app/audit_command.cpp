@@ -125,12 +125,14 @@ int runAudit(int argc, char** argv) {
       "largest creep of a body at rest over --measure s, m")(
       "max-passive-gain", po::value(&max_passive_gain)->default_value(max_passive_gain),
       "largest unexplained energy rise of a passive body, x weight x length")(
-      "config,c", po::value(&config_path), "INI file with settings (command line wins)")(
-      "tsv", po::value(&tsv_path), "write one row per body to this file")(
+      "config,c", po::value(&config_path),
+      "INI file with settings (command line wins; an experiment file's [evolution] and [run] "
+      "keys are passed over)")("tsv", po::value(&tsv_path), "write one row per body to this file")(
       "save-broken", po::value(&broken_dir),
       "write the genome of every body that broke a check to this directory (text form)");
   OptionOrigins origins;
-  po::variables_map vm = parseOptions(argc, argv, cli, schema, nullptr, "config", &origins);
+  po::variables_map vm =
+      parseOptions(argc, argv, cli, schema, nullptr, "config", &origins, kEvolveOnlySections);
   if (vm.count("help")) {
     std::cout << optionsHelp(cli, schema) << "\n";
     return 0;

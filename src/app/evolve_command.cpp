@@ -15,9 +15,11 @@
 #include "run/stop_request.hpp"
 #include "tasks/task.hpp"
 
+#include <cstdlib>
 #include <iostream>
 #include <malloc.h>
 #include <sstream>
+#include <string_view>
 
 namespace cambrian {
 
@@ -44,7 +46,6 @@ struct EvolveSettings {
 struct Setup {
   EvolveSettings settings;
   std::vector<Genotype> seeds;
-  bool help = false;
   std::string help_text;
 };
 
@@ -71,7 +72,6 @@ void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
   OptionOrigins origins;
   po::variables_map vm = parseOptions(argc, argv, cli, schema, nullptr, "config", &origins);
   if (help_markdown) {
-    setup.help = true;
     setup.help_text = optionsMarkdown(schema);
     return;
   }
@@ -92,7 +92,6 @@ void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
          << "(use SIGUSR1 under mpirun) and --max-hours stop cleanly after a generation with a\n"
          << "checkpoint and exit 0. Details in docs/checkpoints.md.\n\n"
          << optionsHelp(cli, schema);
-    setup.help = true;
     setup.help_text = text.str();
     return;
   }
@@ -142,9 +141,42 @@ void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
   }
 }
 
+// whether the command line asks for help (--help, -h, --help-markdown)
+bool asksForHelp(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view word(argv[i]);
+    if (word == "--help" || word == "-h" || word == "--help-markdown")
+      return true;
+  }
+  return false;
+}
+
+// the help, without starting MPI (its threads add nothing to a help text, and a leak checker
+// that stops them at exit has been seen to crash): printed once, by the first rank of an
+// mpirun job (Open MPI, MPICH and Slurm name it in the environment) or by a lone process
+int printHelp(int argc, char** argv) {
+  for (const char* rank : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "SLURM_PROCID"}) {
+    const char* value = std::getenv(rank);
+    if (value && std::string_view(value) != "0")
+      return 0;
+  }
+  Setup setup;
+  try {
+    parse(argc, argv, true, setup);
+  } catch (const Error& e) {
+    std::cerr << "cambrian evolve: error: " << e.what() << std::endl;
+    return static_cast<int>(e.code());
+  }
+  std::cout << setup.help_text;
+  return 0;
+}
+
 }  // namespace
 
 int runEvolve(int argc, char** argv) {
+  if (asksForHelp(argc, argv))
+    return printHelp(argc, argv);
+
   // SIGTERM / SIGUSR1 (first, so an early one ends nothing): rank 0 stops cleanly after the
   // generation, workers carry on until rank 0 tells them to stop
   installStopSignals();
@@ -169,11 +201,6 @@ int runEvolve(int argc, char** argv) {
   code = mpi.allReduceMax(code);
   if (code != 0)
     return code;
-  if (setup.help) {
-    if (root)
-      std::cout << setup.help_text;
-    return 0;
-  }
 
   // the creature settings every evaluation uses
   const EvolveSettings& s = setup.settings;

@@ -30,7 +30,8 @@ int runInspect(int argc, char** argv) {
   po::positional_options_description positional;
   positional.add("genome", 1);
   OptionOrigins origins;
-  po::variables_map vm = parseOptions(argc, argv, cli, schema, &positional, "config", &origins);
+  po::variables_map vm =
+      parseOptions(argc, argv, cli, schema, &positional, "config", &origins, kEvolveOnlySections);
   if (vm.count("help")) {
     std::cout << optionsHelp(cli, schema) << "\n";
     return 0;

@@ -85,7 +85,8 @@ std::string tableCell(const std::string& text) {
 po::variables_map parseOptions(int argc, const char* const* argv,
                                const po::options_description& cli_only, SettingsSchema& schema,
                                const po::positional_options_description* positional,
-                               const std::string& config_key, OptionOrigins* origins) {
+                               const std::string& config_key, OptionOrigins* origins,
+                               const std::set<std::string>& foreign_sections) {
   po::options_description all;
   all.add(cli_only).add(schemaOptions(schema, false));
   po::variables_map vm;
@@ -139,6 +140,8 @@ po::variables_map parseOptions(int argc, const char* const* argv,
     path = vm[config_key].as<std::string>();
     for (const IniEntry& entry : parseIni(readFile(path), path)) {
       Setting* setting = schema.find(entry.key);
+      if (!setting && foreign_sections.count(entry.key.substr(0, entry.key.find('.'))))
+        continue;
       if (!setting)
         throw ConfigError(path + ": line " + std::to_string(entry.line) +
                           ": unrecognised option '" + entry.key + "'");

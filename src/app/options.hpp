@@ -39,12 +39,18 @@ std::string locateSettingError(const std::string& message, const OptionOrigins& 
 /// setting the schema's variables. A command line that does not parse (an unknown option, a
 /// value of the wrong type) is Error(usage); an unreadable file, a line that is not INI, an
 /// unknown key or a bad value in it is a ConfigError naming the file. Range checks are not run
-/// (checkSettings). `origins`, when given, receives where each setting came from.
+/// (checkSettings). `origins`, when given, receives where each setting came from. Keys of the
+/// file in `foreign_sections` that the schema does not have are another command's (an
+/// experiment file's [evolution] and [run] keys, read by simulate) and are passed over.
 po::variables_map parseOptions(int argc, const char* const* argv,
                                const po::options_description& cli_only, SettingsSchema& schema,
                                const po::positional_options_description* positional,
                                const std::string& config_key = "config",
-                               OptionOrigins* origins = nullptr);
+                               OptionOrigins* origins = nullptr,
+                               const std::set<std::string>& foreign_sections = {});
+
+/// The sections of an experiment file that only `evolve` reads.
+inline const std::set<std::string> kEvolveOnlySections = {"evolution", "run"};
 
 /// Runs every range check of `schema`; the ConfigError names where the bad value came from.
 void checkSettings(const SettingsSchema& schema, const OptionOrigins& origins);

@@ -35,14 +35,17 @@ int runSimulate(int argc, char** argv) {
       "seed", po::value(&seed_text)->default_value(seed_text),
       "seed of the random genome and evaluation")("task", po::value(&task_name),
                                                   "the task (same as --task.name)")(
-      "config,c", po::value(&config_path), "INI file with settings (command line wins)")(
-      "save", po::value(&save_path), "write the evaluated genome to this file (text form)")(
+      "config,c", po::value(&config_path),
+      "INI file with settings (command line wins; an experiment file's [evolution] and [run] "
+      "keys are passed over)")("save", po::value(&save_path),
+                               "write the evaluated genome to this file (text form)")(
       "export", po::value(&export_path),
       "write the trajectory (per-frame part poses, HDF5) for analysis/animate.py")(
       "frame-rate", po::value(&frame_rate)->default_value(frame_rate),
       "frames per simulated second in the export, Hz");
   OptionOrigins origins;
-  po::variables_map vm = parseOptions(argc, argv, cli, schema, nullptr, "config", &origins);
+  po::variables_map vm =
+      parseOptions(argc, argv, cli, schema, nullptr, "config", &origins, kEvolveOnlySections);
   if (vm.count("help")) {
     std::cout << optionsHelp(cli, schema) << "\n";
     return 0;

@@ -25,8 +25,9 @@ constexpr double kExpCap = 10;
 constexpr double kMaxOscillatorHz = 4;
 constexpr double kTwoPi = 2 * kPi;
 
-// the longest delay of a delay neuron, steps
-constexpr int kMaxDelay = 16;
+// the longest delay of a delay neuron, steps (a genome's are at most 10: its parameter bound;
+// a catapult's release mechanism waits its release_delay)
+constexpr int kMaxDelay = 255;
 
 // non-finite values become 0, finite ones are clamped to +-limit
 double bounded(double value, double limit = kSignalLimit) {

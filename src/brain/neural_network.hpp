@@ -39,7 +39,7 @@ enum class NeuronFunction : std::uint8_t {
   // Chaumont et al.'s own (2007, Table I), where they differ from the above
   sum_above,      ///< sumT: a + b if a + b >= parameter, else 0
   divide_or_one,  ///< div: 1 if b <= 1e-6, else a / b
-  delay,          ///< mem: a as it was n = round(|parameter|) steps ago (1..16; 0 before)
+  delay,          ///< mem: a as it was n = round(|parameter|) steps ago (1..255; 0 before)
   wave,           ///< wav: b sin(a k + c), k the step count
   count_          ///< number of functions; not a function
 };

@@ -4,6 +4,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
@@ -449,7 +450,8 @@ struct FeatherstoneObjects {
   std::unique_ptr<btMultiBody> body;
   std::vector<std::unique_ptr<btCollisionShape>> object_shapes;
   std::vector<std::unique_ptr<btDefaultMotionState>> object_states;
-  std::vector<std::unique_ptr<btRigidBody>> objects;  // Environment::objects order
+  std::vector<std::unique_ptr<btRigidBody>> objects;  // Environment::objects, then BodyPlan::held
+  std::vector<std::unique_ptr<btMultiBodyFixedConstraint>> holds;  // per held object, null: let go
   bool self_contacts = true;  // parts touch each other (always at the birth check)
   bool has_ground = false;    // the ground plane is in the world
   mutable btAlignedObjectArray<btVector3> omega, velocity;  // linkVelocities()
@@ -464,6 +466,9 @@ struct FeatherstoneObjects {
   btAlignedObjectArray<btVector3> local_origin;
 
   ~FeatherstoneObjects() {
+    for (auto& hold : holds)
+      if (hold)
+        world.removeMultiBodyConstraint(hold.get());
     for (auto& object : objects)
       world.removeRigidBody(object.get());
     world.setDamping(nullptr);
@@ -686,7 +691,7 @@ void FeatherstoneWorld::build(double birth_height) {
   // saturated motors: one per effector, idle (no impulse) until the controller drives it
   if (physics_.actuation == Actuation::saturated_motor) {
     for (const EffectorPlan& effector : plan_.effectors) {
-      int link = dof_link_[effector.part][effector.dof];
+      int link = effector.kind == EffectorKind::joint ? dof_link_[effector.part][effector.dof] : -1;
       if (link < 0) {
         b.motors.push_back(nullptr);
         continue;
@@ -707,13 +712,14 @@ void FeatherstoneWorld::build(double birth_height) {
   body.updateCollisionObjectWorldTransforms(b.world_to_local, b.local_origin);
   contact_.assign(part_count, 0);
 
-  // the environment's free objects, after the creature
+  // the environment's free objects, after the creature, then what the creature holds
   addObjects();
+  addHeldObjects();
 
   // the momentum kept to what the outside forces give, where they are all known
   correct_momentum_ = physics_.momentum_correction &&
                       environment_.ground.kind == Ground::Kind::none &&
-                      environment_.objects.empty();
+                      environment_.objects.empty() && plan_.held.empty();
   total_mass_ = body.getBaseMass();
   for (int link = 0; link < body.getNumLinks(); ++link)
     total_mass_ += body.getLinkMass(link);
@@ -726,6 +732,8 @@ void FeatherstoneWorld::build(double birth_height) {
       drag_.push_back(viscousDrag(part.shape, part.size, environment_.fluid.viscosity));
     for (const FreeObject& object : environment_.objects)
       drag_.push_back(viscousDrag(object.shape, object.size, environment_.fluid.viscosity));
+    for (const HeldObject& held : plan_.held)
+      drag_.push_back(viscousDrag(held.shape, held.size, environment_.fluid.viscosity));
   }
 }
 
@@ -752,6 +760,76 @@ void FeatherstoneWorld::addObjects() {
   }
 }
 
+void FeatherstoneWorld::addHeldObjects() {
+  // each a free body at its place on the holding part, fixed to it by a constraint, not
+  // colliding with it while held
+  FeatherstoneObjects& b = *bullet_;
+  held_first_ = b.objects.size();
+  released_.assign(plan_.held.size(), false);
+  for (std::size_t h = 0; h < plan_.held.size(); ++h) {
+    const HeldObject& held = plan_.held[h];
+    if (held.part < 0 || held.part >= static_cast<int>(plan_.parts.size()) || !(held.mass > 0)) {
+      refuse(EvalStatus::invalid_body, "held object " + std::to_string(h) + " names part " +
+                                           std::to_string(held.part) + " or has no mass");
+      return;
+    }
+    b.object_shapes.push_back(shapeOf(held.shape, held.size));
+    btCollisionShape* shape = b.object_shapes.back().get();
+    btVector3 inertia(0, 0, 0);
+    shape->calculateLocalInertia(held.mass, inertia);
+    PartCollider& holder = *b.colliders[static_cast<std::size_t>(held.part)];
+    const btTransform in_part(toBt(held.pose.rotation), toBt(held.pose.position));
+    const btTransform start = holder.getWorldTransform() * in_part;
+    b.object_states.push_back(std::make_unique<btDefaultMotionState>(start));
+    btRigidBody::btRigidBodyConstructionInfo info(held.mass, b.object_states.back().get(), shape,
+                                                  inertia);
+    info.m_friction = held.material.friction;
+    info.m_restitution =
+        held.material.restitution < 0 ? physics_.restitution : held.material.restitution;
+    b.objects.push_back(std::make_unique<btRigidBody>(info));
+    btRigidBody& object = *b.objects.back();
+    object.setUserIndex(objectIndex(static_cast<int>(b.objects.size() - 1)));
+    object.setActivationState(DISABLE_DEACTIVATION);
+    object.setIgnoreCollisionCheck(&holder, true);
+    anchorFriction(object);
+    b.world.addRigidBody(&object);
+    const btMatrix3x3 frame_in_part = in_part.getBasis();
+    b.holds.push_back(std::make_unique<btMultiBodyFixedConstraint>(
+        b.body.get(), part_link_[static_cast<std::size_t>(held.part)], &object, in_part.getOrigin(),
+        btVector3(0, 0, 0), frame_in_part, btMatrix3x3::getIdentity()));
+    b.holds.back()->setMaxAppliedImpulse(BT_LARGE_FLOAT);
+    b.world.addMultiBodyConstraint(b.holds.back().get());
+  }
+}
+
+void FeatherstoneWorld::release(std::span<const double> commands) {
+  // a release effector over its threshold lets go for good: the hold goes, contacts come back
+  FeatherstoneObjects& b = *bullet_;
+  for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
+    const EffectorPlan& effector = plan_.effectors[e];
+    if (effector.kind != EffectorKind::release || !(commands[e] > kReleaseCommand))
+      continue;
+    const auto h = static_cast<std::size_t>(effector.dof);
+    if (h >= b.holds.size() || !b.holds[h])
+      continue;
+    b.world.removeMultiBodyConstraint(b.holds[h].get());
+    b.holds[h].reset();
+    released_[h] = true;
+    btRigidBody& object = *b.objects[held_first_ + h];
+    object.setIgnoreCollisionCheck(b.colliders[static_cast<std::size_t>(plan_.held[h].part)].get(),
+                                   false);
+  }
+}
+
+int FeatherstoneWorld::heldIndex(int user_index) const {
+  const int h = -2 - user_index - static_cast<int>(held_first_);
+  return user_index <= -2 && h >= 0 && h < static_cast<int>(plan_.held.size()) ? h : -1;
+}
+
+Transform FeatherstoneWorld::heldPose(int held) const {
+  return objectPose(static_cast<int>(held_first_) + held);
+}
+
 void FeatherstoneWorld::checkBirthPenetration() {
   FeatherstoneObjects& b = *bullet_;
 
@@ -762,14 +840,21 @@ void FeatherstoneWorld::checkBirthPenetration() {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     int part_a = manifold->getBody0()->getUserIndex();
     int part_b = manifold->getBody1()->getUserIndex();
-    if (part_a < 0 || part_b < 0)
-      continue;  // the ground or an object
+    // parts with parts, and held objects with parts (the ground and the environment's objects
+    // do not count)
+    const int held_a = heldIndex(part_a), held_b = heldIndex(part_b);
+    if ((part_a < 0 && held_a < 0) || (part_b < 0 && held_b < 0) || (held_a >= 0 && held_b >= 0))
+      continue;
     for (int c = 0; c < manifold->getNumContacts(); ++c) {
       double depth = manifold->getContactPoint(c).getDistance();
       if (depth < -physics_.penetration_tolerance) {
         std::ostringstream message;
-        message << "parts " << std::min(part_a, part_b) << " and " << std::max(part_a, part_b)
-                << " overlap by " << -depth << " m at birth";
+        if (held_a >= 0 || held_b >= 0)
+          message << "held object " << std::max(held_a, held_b) << " and part "
+                  << std::max(part_a, part_b) << " overlap by " << -depth << " m at birth";
+        else
+          message << "parts " << std::min(part_a, part_b) << " and " << std::max(part_a, part_b)
+                  << " overlap by " << -depth << " m at birth";
         refuse(EvalStatus::self_penetration, message.str());
         return;
       }
@@ -848,7 +933,7 @@ void FeatherstoneWorld::applyTorques(std::span<const double> commands, double su
   // explicit torques: effector commands scaled by each joint's strength
   for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
     const EffectorPlan& effector = plan_.effectors[e];
-    int link = dof_link_[effector.part][effector.dof];
+    int link = effector.kind == EffectorKind::joint ? dof_link_[effector.part][effector.dof] : -1;
     if (link < 0)
       continue;
     body.addJointTorque(link, commands[e] * max_torque_[effector.part]);
@@ -859,6 +944,8 @@ void FeatherstoneWorld::step(std::span<const double> commands) {
   // `substeps` equal Bullet steps (maxSubSteps = 0: exactly one internal step each); Bullet
   // clears applied torques after every internal step, so they are re-applied
   const double substep = physics_.time_step / physics_.substeps;
+  if (!plan_.held.empty() && !commands.empty())
+    release(commands);
   for (int k = 0; k < physics_.substeps; ++k) {
     applyTorques(commands, substep);
     if (!drag_.empty())
@@ -1003,7 +1090,7 @@ void FeatherstoneWorld::addEffectorWorkBound(std::span<const double> commands, d
   const btMultiBody& body = *bullet_->body;
   for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
     const EffectorPlan& effector = plan_.effectors[e];
-    int link = dof_link_[effector.part][effector.dof];
+    int link = effector.kind == EffectorKind::joint ? dof_link_[effector.part][effector.dof] : -1;
     if (link >= 0) {
       work_bound_ += std::abs(commands[e]) * max_torque_[effector.part] *
                      std::abs(body.getJointVel(link)) * substep;
@@ -1038,6 +1125,18 @@ double FeatherstoneWorld::mechanicalEnergy() const {
       const btTransform& frame = b.colliders[pivot_part]->getWorldTransform();
       energy += mass * g * (frame * toBt(plan_.parts[pivot_part].pivot_in_child)).z();
     }
+  }
+  // what the creature holds or has thrown is its own
+  for (std::size_t k = held_first_; k < b.objects.size(); ++k) {
+    const btRigidBody& object = *b.objects[k];
+    const double mass = 1 / object.getInvMass();
+    const btVector3 w =
+        object.getWorldTransform().getBasis().transpose() * object.getAngularVelocity();
+    const btVector3 inverse = object.getInvInertiaDiagLocal();
+    energy += 0.5 * mass * object.getLinearVelocity().length2() +
+              0.5 * (w.x() * w.x() / inverse.x() + w.y() * w.y() / inverse.y() +
+                     w.z() * w.z() / inverse.z()) +
+              mass * g * object.getWorldTransform().getOrigin().z();
   }
   return energy;
 }

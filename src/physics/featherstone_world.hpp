@@ -41,12 +41,17 @@ class FeatherstoneWorld : public World {
   Vec3 directionInPart(int part, Vec3 point) const override;
   double lowestPoint() const override;
   Transform objectPose(int object) const override;
+  Transform heldPose(int held) const override;
+  bool released(int held) const override { return released_.at(static_cast<std::size_t>(held)); }
   double mechanicalEnergy() const override;
   double effectorWorkBound() const override { return work_bound_; }
 
  private:
   void build(double birth_height);
   void addObjects();
+  void addHeldObjects();
+  void release(std::span<const double> commands);
+  int heldIndex(int user_index) const;  // the held object a collision object is, or -1
   void checkBirthPenetration();
   void stopSelfContacts();
   void applyTorques(std::span<const double> commands, double substep);
@@ -68,7 +73,9 @@ class FeatherstoneWorld : public World {
   std::vector<double> max_torque_;
   std::vector<std::uint8_t> contact_;
   std::vector<int> part_link_;          // per part: the Bullet link carrying it (-1: the base)
-  std::vector<DragCoefficients> drag_;  // per part, then per object: in a fluid only
+  std::vector<DragCoefficients> drag_;  // per part, then per object and held object: in a fluid
+  std::size_t held_first_ = 0;          // the first held object's index among the rigid bodies
+  std::vector<bool> released_;          // per held object: let go
   std::vector<int> damped_links_;       // every revolute or prismatic link, real or virtual
   std::vector<int> virtual_link_part_;  // per Bullet link: the part whose pivot holds it (virtual
                                         // links of multi-DoF joints), or -1 (the part's own link)

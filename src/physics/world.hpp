@@ -53,6 +53,10 @@ class World {
   virtual double lowestPoint() const = 0;
   /// World pose of free object `object` of the environment (Environment::objects order).
   virtual Transform objectPose(int object) const = 0;
+  /// World pose of held object `held` (BodyPlan::held order).
+  virtual Transform heldPose(int held) const = 0;
+  /// Whether held object `held` has been let go (its release effector fired).
+  virtual bool released(int held) const = 0;
   /// The creature's mechanical energy, J: kinetic plus gravitational (m g z, z = 0 at the ground)
   /// of every body the world simulates for it.
   virtual double mechanicalEnergy() const = 0;

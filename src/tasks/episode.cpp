@@ -115,14 +115,20 @@ Episode::PhaseEnd Episode::runSteps(std::uint64_t steps, bool controller_on, Eva
     simulation_->step(controller_on);
     if (simulation_->status() != EvalStatus::ok)
       return PhaseEnd::stopped;
-    for (Jury* jury : juries)
+    bool finished = false;
+    for (Jury* jury : juries) {
       jury->observe(*simulation_);
+      finished = finished || jury->finished();
+    }
     // a frame for the observer, if any (it only reads)
     if (observer_ && totalSteps() % stride_ == 0)
       show(phase);
     // wall-clock bound, looked at every 256 steps
     if (bounded_ && (totalSteps() & 255) == 0 && Clock::now() > deadline_)
       return PhaseEnd::stopped;
+    // a jury that has measured all it will ends the phase
+    if (finished)
+      return PhaseEnd::done;
     // a settle phase with the rest check ends once the body has rested long enough
     if (rest) {
       fastest = simulation_->fastestPartSpeed();

@@ -1,4 +1,5 @@
-// cambrian: the distance, displacement, approach and height juries and the walk normalisations.
+// cambrian: the distance, displacement, approach, height and throw juries and the walk
+// normalisations.
 #include "tasks/juries.hpp"
 
 #include <algorithm>
@@ -69,6 +70,53 @@ double chaumontFactor(const BodyPlan& plan, double k) {
 double volumeFactor(const BodyPlan& plan) {
   double volume = plan.totalVolume();
   return volume > 0 ? 1.0 / std::cbrt(volume) : 0;
+}
+
+namespace {
+// horizontal distance between two points, m
+double horizontal(Vec3 a, Vec3 b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+}  // namespace
+
+void ThrowJury::begin(const Simulation& simulation) {
+  steps_ = 0;
+  release_step_ = -1;
+  released_ = false;
+  resting_ = 0;
+  distance_ = 0;
+  last_ = simulation.world().heldPose(0).position;
+  miss_ = horizontal(last_, target_);
+}
+
+void ThrowJury::observe(const Simulation& simulation) {
+  ++steps_;
+  const World& world = simulation.world();
+  const Vec3 here = world.heldPose(0).position;
+  if (!released_) {
+    if (!world.released(0)) {
+      last_ = here;
+      return;
+    }
+    // let go during this step: measured from where it was when the step began
+    released_ = true;
+    release_step_ = steps_ - 1;
+    release_point_ = last_;
+    miss_ = horizontal(last_, target_);
+  }
+
+  // the path: nearest the target on the segment it moved along this step
+  const Vec3 a{last_.x, last_.y, 0}, b{here.x, here.y, 0}, t{target_.x, target_.y, 0};
+  const Vec3 ab = b - a;
+  const double length_sq = dot(ab, ab);
+  const double u = length_sq > 0 ? std::clamp(dot(t - a, ab) / length_sq, 0.0, 1.0) : 0.0;
+  miss_ = std::min(miss_, horizontal(a + ab * u, t));
+  distance_ = horizontal(release_point_, here);
+
+  // at rest: slower than rest_speed for rest_steps steps in a row
+  const Vec3 moved = here - last_;
+  resting_ = std::sqrt(dot(moved, moved)) <= rest_speed_ * simulation.timeStep() ? resting_ + 1 : 0;
+  last_ = here;
 }
 
 }  // namespace cambrian

@@ -21,6 +21,9 @@ class Jury {
   virtual void observe(const Simulation&) {}
   /// The measure at the end of the measured phase.
   virtual double value(const Simulation& simulation) const = 0;
+  /// True once the jury has measured all it will: the phase then ends early (a thrown block
+  /// come to rest).
+  virtual bool finished() const { return false; }
 };
 
 /// The point of a body a distance is measured at.
@@ -86,6 +89,37 @@ class HeightJury : public Jury {
 
  private:
   double best_ = 0;
+};
+
+/// "distance": Chaumont et al.'s throw (4.2). Held object 0 is followed from the step it is let
+/// go: the horizontal distance from where it was let go to where it is (D_p), the least
+/// horizontal distance of its path from `target` (D_t), and whether it has come to rest (its
+/// centre slower than `rest_speed` for `rest_steps` steps in a row), which finishes the jury.
+class ThrowJury : public Jury {
+ public:
+  ThrowJury(Vec3 target, double rest_speed, std::uint64_t rest_steps)
+      : target_(target), rest_speed_(rest_speed), rest_steps_(rest_steps) {}
+  const char* name() const override { return "distance"; }
+  void begin(const Simulation& simulation) override;
+  void observe(const Simulation& simulation) override;
+  double value(const Simulation&) const override { return distance_; }
+  bool finished() const override { return resting_ >= rest_steps_; }
+  /// Whether the object has been let go.
+  bool released() const { return released_; }
+  /// Measured steps before it was let go (-1 while held).
+  std::int64_t releaseStep() const { return release_step_; }
+  /// D_t, m: the target's distance from the release point while held.
+  double miss() const { return miss_; }
+
+ private:
+  Vec3 target_;
+  double rest_speed_;
+  std::uint64_t rest_steps_;
+  std::int64_t steps_ = 0, release_step_ = -1;
+  bool released_ = false;
+  Vec3 release_point_, last_;
+  double distance_ = 0, miss_ = 0;
+  std::uint64_t resting_ = 0;
 };
 
 /// Chaumont et al.'s size normalisation C_v / (C_s * C_l) * k^N over the parts of a plan.

@@ -11,10 +11,11 @@ const Task& jumpTask();         // tasks/jump.cpp
 const Task& syntheticTask();    // tasks/synthetic.cpp
 const Task& swimTask();         // tasks/swim.cpp
 const Task& followLightTask();  // tasks/follow_light.cpp
+const Task& catapultTask();     // tasks/catapult.cpp
 
 const std::vector<const Task*>& tasks() {
   static const std::vector<const Task*> registered = {
-      &walkTask(), &jumpTask(), &syntheticTask(), &swimTask(), &followLightTask(),
+      &walkTask(), &jumpTask(), &syntheticTask(), &swimTask(), &followLightTask(), &catapultTask(),
   };
   return registered;
 }

@@ -89,6 +89,24 @@ TEST(SimulateCommand, ConfigFileAndOverride) {
   EXPECT_NE(overridden.output.find("2 s measured"), std::string::npos) << overridden.output;
 }
 
+// an experiment file as it is: its [evolution] and [run] keys are evolve's and passed over, an
+// unknown key of any other section is still refused with its line
+TEST(SimulateCommand, AnExperimentFileAsItIs) {
+  const std::string experiments = std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/experiments/";
+  auto catapult = runCambrian("simulate --random --seed 7 --config " + experiments +
+                              "chaumont/catapult-distance.ini --task.evaluation_time 2");
+  ASSERT_EQ(catapult.exit_code, 0) << catapult.output;
+  EXPECT_NE(catapult.output.find("catapult"), std::string::npos) << catapult.output;
+  std::string path = std::string(CAMBRIAN_BINARY_DIR) + "/simulate_experiment_test.ini";
+  std::ofstream(path) << "[evolution]\npopulation = 3\nno_such_evolve_key = 1\n[run]\nseed = 4\n"
+                         "[physics]\nno_such_key = 1\n";
+  auto unknown = runCambrian("simulate --random --config " + path);
+  EXPECT_EQ(unknown.exit_code, code(ExitCode::config)) << unknown.output;
+  EXPECT_NE(unknown.output.find("line 7: unrecognised option 'physics.no_such_key'"),
+            std::string::npos)
+      << unknown.output;
+}
+
 // bad input: a clear message and the documented exit code
 TEST(SimulateCommand, BadInput) {
   auto unknown = runCambrian("simulate --random --bogus 3");

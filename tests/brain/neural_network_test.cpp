@@ -224,15 +224,16 @@ TEST(Brain, ChaumontFunctionsOnKnownInputs) {
   EXPECT_EQ(neuronArity(F::wave), 3);
 }
 
-// mem: the input as it was n = round(|parameter|) steps ago (0 before), n in 1..16
+// mem: the input as it was n = round(|parameter|) steps ago (0 before), n in 1..255
 TEST(Brain, DelayGivesTheInputOfNStepsAgo) {
   using F = NeuronFunction;
   EXPECT_EQ(run(F::delay, {1, 2, 3, 4, 5, 6}, 3, 0.1), (std::vector<double>{0, 0, 0, 1, 2, 3}));
   EXPECT_EQ(run(F::delay, {1, 2, 3}, -0.2, 0.1), (std::vector<double>{0, 1, 2}));  // at least 1
-  std::vector<double> ramp(20);
-  for (int k = 0; k < 20; ++k)
+  std::vector<double> ramp(300);
+  for (int k = 0; k < 300; ++k)
     ramp[k] = k + 1;
-  EXPECT_EQ(run(F::delay, ramp, 100, 0.1)[17], 2.0);  // at most 16 steps
+  EXPECT_EQ(run(F::delay, ramp, 100, 0.1)[101], 2.0);
+  EXPECT_EQ(run(F::delay, ramp, 1000, 0.1)[256], 2.0);  // at most 255 steps
 
   // two delay neurons keep rings of their own, and reset empties them
   TestPlan plan = planWithSensors(1);

@@ -121,6 +121,10 @@ case $mode in
       "${common[@]}" --seed 11
     evolve chaumont_walk --config "$source_dir/jobs/experiments/chaumont/walk.ini" \
       "${common[@]}" --seed 12
+    evolve catapult_distance --config "$source_dir/jobs/experiments/chaumont/catapult-distance.ini" \
+      "${common[@]}" --seed 13
+    evolve catapult_aim_flat --config "$source_dir/jobs/experiments/chaumont/catapult-aim.ini" \
+      --genome.projectile_mutation true "${common[@]}" --seed 14
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do
@@ -144,6 +148,10 @@ case $mode in
     for seed in 1 2; do
       simulate "simulate_random${seed}_swim" --random --seed "$seed" --task swim \
         --environment.name water --task.evaluation_time 2
+    done
+    for seed in 1 6; do
+      simulate "simulate_random${seed}_catapult" --random --seed "$seed" --task catapult \
+        --genome.catapult true --task.evaluation_time 3
     done
     simulate simulate_random3_synthetic --random --seed 3 --task synthetic \
       --task.synthetic_cost_us 10 --task.synthetic_distribution lognormal

@@ -1,6 +1,7 @@
 // Tests of the Featherstone world behind the World interface: every part shape rests where its
 // geometry says, prismatic joints slide, closed loops are refused with a clear status, free
-// objects of the environment fall and can be read back, materials bounce, the registry.
+// objects of the environment fall and can be read back, materials bounce, held objects are
+// carried until their release effector fires, the registry.
 #include "physics/featherstone_world.hpp"
 
 #include "cambrian/error.hpp"
@@ -169,6 +170,64 @@ TEST(World, RegistryAndUnknownNames) {
   EXPECT_EQ(makeWorld(plan, environment, physics)->birthStatus(), EvalStatus::ok);
   physics.world = "mujoco";
   EXPECT_THROW(makeWorld(plan, environment, physics), ConfigError);
+}
+
+// a wide slab holding a 0.1 m block against the middle of its +x face, with its release effector
+BodyPlan slabHolding() {
+  BodyPlan plan;
+  plan.parts.push_back(partOf(PartShape::box, {1.0, 1.0, 0.2}));
+  HeldObject held;
+  held.size = {0.1, 0.1, 0.1};
+  held.mass = 1;
+  held.pose.position = {0.55, 0, 0};
+  plan.held.push_back(held);
+  plan.effectors.push_back(EffectorPlan{0, 0, EffectorKind::release});
+  return plan;
+}
+
+// the block stays where the slab holds it, above the ground, until the command passes 0.5; then
+// it falls to the ground beside the slab; the energy counts it
+TEST(FeatherstoneWorld, AHeldObjectIsCarriedUntilReleased) {
+  const BodyPlan plan = slabHolding();
+  Environment environment;
+  PhysicsSettings physics;
+  FeatherstoneWorld world(plan, environment, physics, 0.0);
+  ASSERT_EQ(world.birthStatus(), EvalStatus::ok) << world.birthMessage();
+  const std::vector<double> hold{0.5}, let_go{0.9};
+  for (int s = 0; s < 240; ++s)
+    world.step(hold);
+  EXPECT_FALSE(world.released(0));
+  const Transform slab = world.partPose(0);
+  const Vec3 in_slab = world.heldPose(0).position - slab.position;
+  EXPECT_NEAR(in_slab.x, 0.55, 2e-3);
+  EXPECT_NEAR(in_slab.z, 0.0, 2e-3);
+  EXPECT_NEAR(world.heldPose(0).position.z, 0.1, 3e-3);  // held at the slab's mid-height
+
+  world.step(let_go);
+  EXPECT_TRUE(world.released(0));
+  for (int s = 0; s < 240; ++s)
+    world.step(hold);  // a smaller command later changes nothing
+  EXPECT_TRUE(world.released(0));
+  EXPECT_NEAR(world.heldPose(0).position.z, 0.05, 3e-3);  // on the ground
+  EXPECT_NEAR(world.heldPose(0).position.x, 0.55, 0.02);  // straight down
+  // at rest: m g z of the slab and of the block
+  EXPECT_NEAR(world.mechanicalEnergy(),
+              200 * 9.81 * world.partPosition(0).z + 1 * 9.81 * world.heldPose(0).position.z, 0.05);
+}
+
+// a held object overlapping another part at birth is a self-penetration naming it
+TEST(FeatherstoneWorld, AHeldObjectInsideAPartIsRefused) {
+  BodyPlan plan = slabHolding();
+  PartPlan leg = partOf(PartShape::box, {0.2, 0.2, 0.2}, {0.6, 0, 0}, 0);
+  leg.pivot_in_parent = {0.5, 0, 0};
+  leg.pivot_in_child = {-0.1, 0, 0};
+  plan.parts.push_back(leg);
+  Environment environment;
+  PhysicsSettings physics;
+  FeatherstoneWorld world(plan, environment, physics, 0.0);
+  EXPECT_EQ(world.birthStatus(), EvalStatus::self_penetration);
+  EXPECT_NE(world.birthMessage().find("held object 0 and part 1"), std::string::npos)
+      << world.birthMessage();
 }
 
 }  // namespace

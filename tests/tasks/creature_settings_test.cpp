@@ -57,9 +57,10 @@ TEST(CreatureSettings, CopiesAreDeep) {
 TEST(CreatureSettings, IniTextHoldsEveryCreatureSection) {
   CreatureSettings settings;
   std::string text = settings.iniText();
-  for (const char* line : {"[environment]\nname = plane\n",
-                           "[genome]\ncontact_sensors = part\nencoding = directed_graph\n",
-                           "world = featherstone\n", "name = walk\n", "max_weight = 5\n"})
+  for (const char* line :
+       {"[environment]\nname = plane\n",
+        "[genome]\ncatapult = false\ncontact_sensors = part\nencoding = directed_graph\n",
+        "world = featherstone\n", "name = walk\n", "max_weight = 5\n"})
     EXPECT_NE(text.find(line), std::string::npos) << line;
   // another schema bound to the same settings sets them
   SettingsSchema schema;

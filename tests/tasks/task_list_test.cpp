@@ -28,8 +28,8 @@ TEST(Tasks, NamesAreDistinctAndEachDeclaresMeasures) {
     EXPECT_EQ(measures.size(), task->measures().size()) << task->name();
   }
   EXPECT_EQ(names.size(), tasks().size());
-  EXPECT_EQ(taskNames(),
-            (std::vector<std::string>{"walk", "jump", "synthetic", "swim", "follow_light"}));
+  EXPECT_EQ(taskNames(), (std::vector<std::string>{"walk", "jump", "synthetic", "swim",
+                                                   "follow_light", "catapult"}));
 }
 
 // every task's settings fit in one schema: no key is declared by two tasks

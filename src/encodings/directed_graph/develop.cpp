@@ -73,6 +73,27 @@ double faceArea(Vec3 size, int k) {
   return size[(k + 1) % 3] * size[(k + 2) % 3];
 }
 
+// where a catapult's arm (the root, of `arm`'s size) holds the projectile: the position pushed
+// to the arm's surface, the block against that face, aligned with the arm
+HeldObject heldProjectile(const ProjectileGene& gene, const PartPlan& arm,
+                          const GenomeLimits& limits) {
+  HeldObject held;
+  held.part = 0;
+  held.shape = PartShape::box;
+  for (int k = 0; k < 3; ++k)
+    held.size[k] = std::clamp(gene.dimensions[k], limits.min_part_size, limits.max_part_size);
+  held.mass = gene.density * held.size.x * held.size.y * held.size.z;
+  held.material.density = gene.density;
+  Vec3 p = gene.position;
+  const int k = dominantAxis(p);
+  const double face_sign = p[k] < 0 ? -1.0 : 1.0;
+  p[k] = face_sign;
+  Vec3 centre = hadamard(p, arm.size * 0.5);
+  centre[k] += face_sign * 0.5 * held.size[k];
+  held.pose = Transform{centre, Quat{1, 0, 0, 0}};
+  return held;
+}
+
 // structural checks that development itself needs (validateGenome checks the rest)
 void checkGenome(const Genome& genome, const GenomeLimits& limits) {
   if (genome.nodes.empty()) {
@@ -248,7 +269,10 @@ class Embryo {
     part.parent_to_child = rotation;
     part.axes = jointAxes(handed);
     part.joint_limit = node.joint_limit;
-    part.cross_section = std::min(faceArea(up.size, k), part.size.y * part.size.z);
+    const double parent_face = faceArea(up.size, k), child_face = part.size.y * part.size.z;
+    part.cross_section = limits_.strength_section == StrengthSection::larger
+                             ? std::max(parent_face, child_face)
+                             : std::min(parent_face, child_face);
     part.reflected = mirror != 0;
     const Transform local{part.pivot_in_parent - rotate(rotation, part.pivot_in_child), rotation};
     part.pose = compose(up.pose, local);
@@ -416,8 +440,9 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
   const std::vector<std::vector<int>> first_child = embryo.grow(plan);
   const int part_count = static_cast<int>(plan.parts.size());
 
-  // sensors: per part its joint angles then its contact (or six, one per face); then the
-  // creature's three photo sensors
+  // sensors: per part its joint angles, its contact (or six, one per face) and, with
+  // photosensors on every part, its three photo sensors; then the creature's three photo
+  // sensors
   Ranges ranges;
   ranges.sensor_first.resize(part_count);
   ranges.sensor_count.resize(part_count);
@@ -431,6 +456,10 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
         plan.sensors.push_back(SensorPlan{SensorKind::contact_face, i, face});
     } else {
       plan.sensors.push_back(SensorPlan{SensorKind::contact, i, 0});
+    }
+    if (limits.photosensors == Photosensors::every_part) {
+      for (int axis = 0; axis < 3; ++axis)
+        plan.sensors.push_back(SensorPlan{SensorKind::photo, i, axis});
     }
     ranges.sensor_count[i] = static_cast<int>(plan.sensors.size()) - ranges.sensor_first[i];
   }
@@ -486,6 +515,31 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
       oscillators.push_back(gene);
       any_oscillator = any_oscillator || gene.enabled;
     }
+  }
+
+  // a catapult: the arm (the root) holds the projectile, and Chaumont et al.'s four-unit
+  // mechanism (their Figure 4) lets go of it: a constant, a delay, the larger of the delay and
+  // the network's trigger, and the release effector. The delay's output reaches the effector
+  // two steps after its own, so the projectile goes at the latest on controller step
+  // release_delay, earlier when the trigger passes kReleaseCommand.
+  if (genome.projectile) {
+    plan.held.push_back(heldProjectile(*genome.projectile, plan.parts[0], limits));
+    auto signal = [&plan](std::size_t neuron) {
+      return static_cast<int>(plan.sensors.size() + neuron);
+    };
+    NeuronPlan constant{NeuronFunction::constant, 1.0, 0, {}};
+    NeuronPlan delay{
+        NeuronFunction::delay, static_cast<double>(std::max(1, limits.release_delay - 2)), 0, {}};
+    NeuronPlan larger{NeuronFunction::max, 0.0, 0, {}};
+    delay.inputs[0] = Wire{signal(neurons.size()), 1.0};
+    larger.inputs[0] = Wire{signal(neurons.size() + 1), 1.0};
+    larger.inputs[1] = wiring.partInput(genome.projectile->trigger, 0);
+    neurons.push_back(constant);
+    neurons.push_back(delay);
+    neurons.push_back(larger);
+    plan.effectors.push_back(EffectorPlan{0, 0, EffectorKind::release});
+    network->effector_inputs.push_back(Wire{signal(neurons.size() - 1), 1.0});
+    oscillators.push_back(SineOscillator{});
   }
 
   // the network drives the effectors; the joint oscillators, when any is on, add to it

@@ -99,6 +99,42 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
               "the neuron functions genomes use: sims (Sims' and cambrian's first 24) | chaumont "
               "(Chaumont et al.'s cst sum mul sumT div mem wav, every signal within +-1)");
 
+  s.addChoice("genome.strength_section", g.strength_section,
+              {{"smaller", StrengthSection::smaller}, {"larger", StrengthSection::larger}},
+              "which of the two faces meeting at a joint its strength is proportional to: "
+              "smaller | larger (Chaumont et al.'s 'cross section of the bigger block', after "
+              "Sims)");
+  s.addChoice("genome.photosensors", g.photosensors,
+              {{"root", Photosensors::root}, {"every_part", Photosensors::every_part}},
+              "the parts with photosensors: root (three for the whole creature) | every_part "
+              "(three more on each part, in its own frame, read by its neurons as local sensors: "
+              "Sims' photosensors 'relative to the orientation of the photosensitive part')");
+  s.add("genome.catapult", g.catapult,
+        "Chaumont et al.'s catapults: the root part is an arm holding a projectile it lets go of "
+        "after genome.release_delay controller steps, or earlier on the network's signal");
+  s.add("genome.projectile_mutation", g.projectile_mutation,
+        "catapults: mutation may change the projectile's size and density (Chaumont et al.: in "
+        "some runs)");
+  s.add("genome.projectile_side", g.projectile_side,
+        "catapults: side of a random genome's cubic projectile, m")
+      .require(
+          [&g] {
+            return g.projectile_side >= g.min_part_size && g.projectile_side <= g.max_part_size;
+          },
+          "must lie within genome.min_part_size and genome.max_part_size");
+  s.add("genome.projectile_density", g.projectile_density,
+        "catapults: density of a random genome's projectile, kg/m^3")
+      .require(
+          [&g] {
+            return g.projectile_density >= g.min_density && g.projectile_density <= g.max_density;
+          },
+          "must lie within genome.min_density and genome.max_density");
+  s.add("genome.release_delay", g.release_delay,
+        "catapults: controller steps until the arm lets go of the projectile at the latest "
+        "(Chaumont et al.: 30)")
+      .require([&g] { return g.release_delay >= 3 && g.release_delay <= 257; },
+               "must be in [3, 257]");
+
   // [evolution]: the structural mutation rates of the graph (their historic keys)
   MutationSettings& m = mutation;
   auto probability = [&s](const char* key, double& rate, const char* help) {
@@ -117,6 +153,10 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
   probability("evolution.add_neuron_rate", m.add_neuron_rate, "chance a mutation adds a neuron");
   probability("evolution.remove_neuron_rate", m.remove_neuron_rate,
               "chance a mutation removes a neuron");
+  s.addChoice("evolution.graft_into", graft_into,
+              {{"root", GraftInto::root}, {"any_node", GraftInto::any_node}},
+              "the second parent's node a graft leads into: root (its whole body) | any_node "
+              "(drawn uniformly, as Sims grafts)");
   s.add("evolution.keep_unconnected", m.keep_unconnected,
         "keep nodes unreachable from the root (Chaumont) instead of collecting them");
 }
@@ -181,7 +221,7 @@ Genotype DirectedGraphEncoding::combine(Variation variation, const Genotype& a, 
   const Genome& first = graphGenome(a);
   const Genome& second = graphGenome(b);
   if (variation == Variation::graft)
-    return makeGenotype(graft(first, second, limits, rng));
+    return makeGenotype(graft(first, second, limits, rng, graft_into));
   return makeGenotype(crossover(first, second, limits, rng));
 }
 

@@ -58,6 +58,8 @@ class DirectedGraphEncoding : public Encoding {
   std::string joint_type_names = "rigid revolute universal spherical";
   /// The structural mutation rates ([evolution] keys; parameter_rate comes with each call).
   MutationSettings mutation;
+  /// Where grafting attaches the second parent (evolution.graft_into).
+  GraftInto graft_into = GraftInto::root;
 };
 
 }  // namespace cambrian::graph

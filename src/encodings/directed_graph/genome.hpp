@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,11 +91,23 @@ struct ConnectionGene {
   friend bool operator==(const ConnectionGene&, const ConnectionGene&) = default;
 };
 
+/// Chaumont et al.'s catapult (genome.catapult): the block the root part, the arm, holds and
+/// throws, and the one evolvable wire of the arm's release mechanism (their Figure 4).
+struct ProjectileGene {
+  Vec3 dimensions{0.2, 0.2, 0.2};  ///< full box size, m
+  double density = 1000;           ///< kg / m^3
+  Vec3 position{0, 0, 1};  ///< where the arm holds it, each in [-1, 1], pushed to its surface
+  NeuronInput trigger;     ///< the network's signal into the mechanism, read as at the root
+  friend bool operator==(const ProjectileGene&, const ProjectileGene&) = default;
+};
+
 /// The whole genome. Node 0 is the root.
 struct Genome {
   std::vector<PartGene> nodes;
   std::vector<ConnectionGene> connections;
   std::vector<NeuronGene> brain;  ///< global neurons, instantiated once per creature
+  /// a catapult's projectile and release wire (genome.catapult); none in every other genome
+  std::optional<ProjectileGene> projectile;
   friend bool operator==(const Genome&, const Genome&) = default;
 };
 
@@ -108,6 +121,18 @@ enum class NeuronSet : std::uint8_t {
 enum class ContactSensors : std::uint8_t {
   per_part,  ///< one: 1 when anything touches the part, else 0
   per_face,  ///< six, one per face: 1 when touched, else -1 (Sims; Chaumont et al.'s sen)
+};
+
+/// Where development puts photosensors (genome.photosensors).
+enum class Photosensors : std::uint8_t {
+  root,        ///< three for the whole creature, on the root (read through brain_sensor)
+  every_part,  ///< those, and three more on every part, read like its other local sensors (Sims)
+};
+
+/// Which of the two faces meeting at a joint gives its strength (genome.strength_section).
+enum class StrengthSection : std::uint8_t {
+  smaller,  ///< the smaller of the two faces meeting at the joint (cambrian's first choice)
+  larger,   ///< the larger: Chaumont et al.'s "cross section of the bigger block", after Sims
 };
 
 /// Limits that keep creatures finite. Defaults follow Chaumont et al. and Sims.
@@ -133,6 +158,19 @@ struct GenomeLimits {
   NeuronSet neuron_set = NeuronSet::sims;
   /// Each part's contact sensors.
   ContactSensors contact_sensors = ContactSensors::per_part;
+  /// The cross-section each joint's strength is proportional to (physics.strength_per_area).
+  StrengthSection strength_section = StrengthSection::smaller;
+  /// The parts with photosensors.
+  Photosensors photosensors = Photosensors::root;
+  /// Chaumont et al.'s catapults: every genome carries a ProjectileGene; the root is the arm
+  /// that holds the projectile and lets go of it after `release_delay` controller steps, or
+  /// earlier when the network's signal says so.
+  bool catapult = false;
+  /// Mutation may change the projectile's size and density (Chaumont et al.: in some runs).
+  bool projectile_mutation = false;
+  double projectile_side = 0.2;      ///< m, the side of a random genome's cubic projectile
+  double projectile_density = 1000;  ///< kg / m^3, a random genome's projectile
+  int release_delay = 30;            ///< controller steps until the projectile is let go at last
 };
 
 //---------------------------------------------------------------- operations
@@ -145,8 +183,9 @@ Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_
 /// Checks structure and ranges; throws GenomeError naming the gene and field.
 void validateGenome(const Genome& genome, const GenomeLimits& limits);
 
-/// Current version of the byte format. Readers accept this and older versions.
-constexpr std::uint32_t kGenomeFormatVersion = 1;
+/// Current version of the byte format (2: a catapult's projectile after the brain). Readers
+/// accept this and older versions; a genome without a projectile is written as version 1.
+constexpr std::uint32_t kGenomeFormatVersion = 2;
 
 /// The tag that starts the byte form.
 constexpr std::array<char, 4> kGenomeTag = {'C', 'M', 'B', 'G'};

@@ -112,6 +112,17 @@ class Perturber {
     number(j.offset, -kControllerOffsetBound, kControllerOffsetBound);
   }
 
+  // a catapult's projectile: where the arm holds it and the release wire always; its block only
+  // with genome.projectile_mutation (the mechanism itself is not in the genome)
+  void projectile(ProjectileGene& p) {
+    vec3(p.position, -kPositionBound, kPositionBound);
+    input(p.trigger);
+    if (!limits_.projectile_mutation)
+      return;
+    vec3(p.dimensions, limits_.min_part_size, limits_.max_part_size);
+    number(p.density, limits_.min_density, limits_.max_density);
+  }
+
  private:
   const GenomeLimits& limits_;
   const MutationSettings& settings_;
@@ -156,6 +167,8 @@ Genome mutate(const Genome& parent, const GenomeLimits& limits, const MutationSe
     perturb.connection(c);
   for (NeuronGene& n : g.brain)
     perturb.neuron(n);
+  if (g.projectile)
+    perturb.projectile(*g.projectile);
 
   // add a node, with a connection to it from a reachable node
   int node_count = static_cast<int>(g.nodes.size());
@@ -247,13 +260,16 @@ Genome crossover(const Genome& a, const Genome& b, const GenomeLimits& limits, R
     }
   }
 
-  // the brain comes whole from one parent
+  // the brain comes whole from one parent; the arm (node 0) and its projectile from the first
+  // (Chaumont et al.'s Figure 6)
   child.brain = rng.bernoulli(0.5) ? a.brain : b.brain;
+  child.projectile = a.projectile;
   fitToLimits(child, limits);
   return child;
 }
 
-Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& rng) {
+Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& rng,
+             GraftInto into) {
   Genome g = a;
   if (g.nodes.empty())
     g.nodes.emplace_back();
@@ -273,9 +289,11 @@ Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& 
     g.connections.push_back(c);
   }
 
-  // one of a's connections now leads into b's root (or a new one does)
+  // one of a's connections now leads into b's root or a random node of b (or a new one does);
+  // the root draws nothing, so grafts into the root are what they always were
   if (appended > 0) {
-    auto b_root = static_cast<std::uint16_t>(offset);
+    auto b_root = static_cast<std::uint16_t>(
+        offset + (into == GraftInto::any_node ? rng.below(appended) : 0));
     if (a_connections > 0) {
       g.connections[rng.below(a_connections)].to = b_root;
     } else {

@@ -28,12 +28,22 @@ Genome mutate(const Genome& parent, const GenomeLimits& limits, const MutationSe
               Rng& rng);
 
 /// Sims' crossover: nodes of both parents aligned by index, copied from one parent and then the
-/// other at crossover points. Result is valid under limits.
+/// other at crossover points; a catapult's arm (node 0) and projectile come from `a`. Result is
+/// valid under limits.
 Genome crossover(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& rng);
 
+/// Which node of the second parent grafting leads into.
+enum class GraftInto : std::uint8_t {
+  root,      ///< its root, so that its whole body comes along
+  any_node,  ///< a node drawn uniformly (Sims' grafting)
+};
+
 /// Sims' grafting: a copy of `a` with one of its connections re-pointed into a copy of `b`'s
-/// graph appended to it. Result is valid under limits.
-Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& rng);
+/// graph appended to it, at `b`'s root or at a random node of it; `b`'s nodes that then cannot
+/// be reached are dropped (a catapult's arm and projectile stay `a`'s). Result is valid under
+/// limits.
+Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& rng,
+             GraftInto into = GraftInto::root);
 
 /// Removes nodes unreachable from the root, renumbering connections.
 Genome removeUnreachableNodes(const Genome& genome);

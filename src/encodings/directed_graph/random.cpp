@@ -120,6 +120,23 @@ ConnectionGene randomConnectionGene(std::uint16_t from, std::uint16_t to,
   return c;
 }
 
+ProjectileGene randomProjectileGene(const GenomeLimits& limits, Rng& rng) {
+  ProjectileGene projectile;
+  projectile.dimensions = Vec3{1, 1, 1} * limits.projectile_side;
+  projectile.density = limits.projectile_density;
+  if (limits.projectile_mutation) {
+    for (int k = 0; k < 3; ++k) {
+      projectile.dimensions[k] =
+          uniformWithin(rng, 0.08, 0.45, limits.min_part_size, limits.max_part_size);
+    }
+    projectile.density = uniformWithin(rng, 500, 1500, limits.min_density, limits.max_density);
+  }
+  for (int k = 0; k < 3; ++k)
+    projectile.position[k] = rng.uniform(-kPositionBound, kPositionBound);
+  projectile.trigger = randomNeuronInput(limits, rng);
+  return projectile;
+}
+
 Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_t generation,
                     std::uint64_t individual) {
   Rng rng(seed, RngPurpose::random_genome, generation, individual);
@@ -166,6 +183,10 @@ Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_
   int brain = rng.between(0, std::min(3, std::max(0, limits.max_brain_neurons)));
   for (int i = 0; i < brain; ++i)
     genome.brain.push_back(randomNeuronGene(limits, rng));
+
+  // a catapult's projectile, drawn last (other genomes draw exactly what they drew before)
+  if (limits.catapult)
+    genome.projectile = randomProjectileGene(limits, rng);
 
   // whatever the limits, the result is valid
   fitToLimits(genome, limits);

@@ -22,4 +22,9 @@ PartGene randomPartGene(const GenomeLimits& limits, Rng& rng);
 ConnectionGene randomConnectionGene(std::uint16_t from, std::uint16_t to,
                                     const GenomeLimits& limits, Rng& rng);
 
+/// A catapult's projectile (GenomeLimits::catapult): held anywhere on the arm, with a random
+/// release wire; a cube of limits.projectile_side and projectile_density, or with
+/// projectile_mutation a random block like a part's.
+ProjectileGene randomProjectileGene(const GenomeLimits& limits, Rng& rng);
+
 }  // namespace cambrian::graph

@@ -82,6 +82,17 @@ void fitConnection(ConnectionGene& c, const GenomeLimits& limits) {
   j.offset = clampToRange(j.offset, -kControllerOffsetBound, kControllerOffsetBound);
 }
 
+// a catapult's projectile within the part ranges; position within the connection bounds
+void fitProjectile(ProjectileGene& projectile, const GenomeLimits& limits) {
+  for (int k = 0; k < 3; ++k) {
+    projectile.dimensions[k] =
+        clampToRange(projectile.dimensions[k], limits.min_part_size, limits.max_part_size);
+    projectile.position[k] = clampToRange(projectile.position[k], -kPositionBound, kPositionBound);
+  }
+  projectile.density = clampToRange(projectile.density, limits.min_density, limits.max_density);
+  fitInput(projectile.trigger, limits);
+}
+
 }  // namespace
 
 void fitToLimits(Genome& genome, const GenomeLimits& limits) {
@@ -101,6 +112,18 @@ void fitToLimits(Genome& genome, const GenomeLimits& limits) {
   for (ConnectionGene& c : genome.connections)
     fitConnection(c, limits);
   fitNeurons(genome.brain, limits.max_brain_neurons, limits);
+
+  // a projectile in every catapult genome and in no other
+  if (!limits.catapult) {
+    genome.projectile.reset();
+    return;
+  }
+  if (!genome.projectile) {
+    genome.projectile.emplace();
+    genome.projectile->dimensions = Vec3{1, 1, 1} * limits.projectile_side;
+    genome.projectile->density = limits.projectile_density;
+  }
+  fitProjectile(*genome.projectile, limits);
 }
 
 }  // namespace cambrian::graph

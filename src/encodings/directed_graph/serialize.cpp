@@ -72,7 +72,9 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
 
   // header: tag and version
   w.raw(kGenomeTag.data(), kGenomeTag.size());
-  w.u32(kGenomeFormatVersion);
+  // the oldest version that carries the genome: 1 without a projectile, so that every other
+  // genome keeps its bytes
+  w.u32(genome.projectile ? kGenomeFormatVersion : 1);
 
   // nodes
   w.u32(static_cast<std::uint32_t>(genome.nodes.size()));
@@ -106,8 +108,16 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
     w.f64(c.controller.offset);
   }
 
-  // brain
+  // brain, then (version 2) the projectile
   writeNeurons(w, genome.brain);
+  if (genome.projectile) {
+    const ProjectileGene& p = *genome.projectile;
+    w.u8(1);
+    w.vec3(p.dimensions);
+    w.f64(p.density);
+    w.vec3(p.position);
+    writeInput(w, p.trigger);
+  }
   return out;
 }
 
@@ -170,8 +180,18 @@ Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
     c.controller.offset = r.f64();
   }
 
-  // brain, then nothing
+  // brain, then (version 2) the projectile, then nothing
   genome.brain = readNeurons(r, "brain");
+  if (version >= 2) {
+    r.context("projectile");
+    if (r.flag("projectile")) {
+      ProjectileGene& p = genome.projectile.emplace();
+      p.dimensions = r.vec3();
+      p.density = r.f64();
+      p.position = r.vec3();
+      p.trigger = readInput(r);
+    }
+  }
   r.context("end");
   r.expectEnd();
   return genome;

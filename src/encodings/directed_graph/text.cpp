@@ -327,6 +327,25 @@ void parseControllerFields(Line& line, JointControllerGene& controller) {
   }
 }
 
+// projectile fields: size, density, position, trigger
+void parseProjectileFields(Line& line, ProjectileGene& projectile) {
+  while (line.more()) {
+    std::string_view key = line.next("projectile field", "a field");
+    if (key == "size") {
+      projectile.dimensions = line.vec3("size");
+    } else if (key == "density") {
+      projectile.density = line.number("density");
+    } else if (key == "position") {
+      projectile.position = line.vec3("position");
+    } else if (key == "trigger") {
+      projectile.trigger = parseInput(line);
+    } else {
+      line.fail("unknown projectile field '" + std::string(key) +
+                "' (size, density, position, trigger)");
+    }
+  }
+}
+
 }  // namespace
 
 std::string genomeToText(const Genome& genome) {
@@ -373,6 +392,13 @@ std::string genomeToText(const Genome& genome) {
     out << "brain\n";
     for (const NeuronGene& neuron : genome.brain)
       writeNeuron(out, neuron);
+  }
+
+  // a catapult's projectile
+  if (genome.projectile) {
+    const ProjectileGene& p = *genome.projectile;
+    out << "projectile size " << vec3Text(p.dimensions) << " density " << formatNumber(p.density)
+        << " position " << vec3Text(p.position) << " trigger " << inputText(p.trigger) << "\n";
   }
 
   // the end marker: a file cut short lacks it
@@ -523,6 +549,15 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
       line.context(where + ": controller");
       parseControllerFields(line, genome.connections.back().controller);
       last_neuron = nullptr;
+    } else if (keyword == "projectile") {
+      // a catapult's projectile, once
+      where = "projectile";
+      line.context(where);
+      if (genome.projectile)
+        line.fail("a genome has one projectile");
+      parseProjectileFields(line, genome.projectile.emplace());
+      section = Section::none;
+      last_neuron = nullptr;
     } else if (keyword == "cambrian-genome") {
       line.fail("the header may appear only once");
     } else {
@@ -536,7 +571,7 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
         parseConnectionFields(rest, genome.connections.back());
       } else {
         line.fail("unknown statement '" + keyword +
-                  "' (node, connection, brain, neuron, effector, controller, end)");
+                  "' (node, connection, brain, neuron, effector, controller, projectile, end)");
       }
       last_neuron = nullptr;
     }

@@ -162,6 +162,27 @@ void validateGenome(const Genome& genome, const GenomeLimits& limits) {
   for (std::size_t i = 0; i < genome.brain.size(); ++i) {
     checkNeuron("brain: neuron " + std::to_string(i), genome.brain[i], limits);
   }
+
+  // a projectile in every catapult genome and in no other
+  if (limits.catapult != genome.projectile.has_value()) {
+    throw GenomeError(limits.catapult
+                          ? "genome: has no projectile, and genome.catapult = true needs one"
+                          : "genome: has a projectile (a catapult's), and genome.catapult = false");
+  }
+  if (genome.projectile) {
+    const ProjectileGene& p = *genome.projectile;
+    static constexpr const char* kAxes[] = {"x", "y", "z"};
+    for (int k = 0; k < 3; ++k) {
+      checkRange("projectile", std::string("size.") + kAxes[k], p.dimensions[k],
+                 limits.min_part_size, "genome.min_part_size", limits.max_part_size,
+                 "genome.max_part_size");
+      checkFixedRange("projectile", std::string("position.") + kAxes[k], p.position[k],
+                      -kPositionBound, kPositionBound);
+    }
+    checkRange("projectile", "density", p.density, limits.min_density, "genome.min_density",
+               limits.max_density, "genome.max_density");
+    checkInput("projectile: trigger", p.trigger, limits);
+  }
 }
 
 }  // namespace cambrian::graph

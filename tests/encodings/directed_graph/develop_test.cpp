@@ -665,5 +665,62 @@ TEST(Develop, ContactSensorsPerFace) {
   EXPECT_EQ(develop(genome, GenomeLimits{}).body.sensors.size(), 1u + 2u + 3u);
 }
 
+// a catapult's arm holds its projectile against the face its position points to, flush with it;
+// the release effector comes last, driven by the mechanism's larger-of neuron
+TEST(Develop, TheArmHoldsTheProjectile) {
+  Genome g;
+  g.nodes.push_back(box({0.6, 0.4, 0.2}));
+  ProjectileGene projectile;
+  projectile.dimensions = {0.1, 0.2, 0.3};
+  projectile.density = 500;
+  projectile.position = {0.2, -0.5, 0.9};  // the +z face
+  g.projectile = projectile;
+  GenomeLimits limits;
+  limits.catapult = true;
+  const Creature creature = develop(g, limits);
+  ASSERT_EQ(creature.body.held.size(), 1u);
+  const HeldObject& held = creature.body.held[0];
+  EXPECT_EQ(held.part, 0);
+  EXPECT_EQ(held.size, (Vec3{0.1, 0.2, 0.3}));
+  EXPECT_NEAR(held.mass, 500 * 0.1 * 0.2 * 0.3, 1e-12);
+  EXPECT_NEAR(held.pose.position.x, 0.2 * 0.3, 1e-12);
+  EXPECT_NEAR(held.pose.position.y, -0.5 * 0.2, 1e-12);
+  EXPECT_NEAR(held.pose.position.z, 0.1 + 0.15, 1e-12);  // its -z face on the arm's +z face
+  ASSERT_FALSE(creature.body.effectors.empty());
+  const EffectorPlan& release = creature.body.effectors.back();
+  EXPECT_EQ(release.kind, EffectorKind::release);
+  EXPECT_EQ(release.part, 0);
+  EXPECT_EQ(release.dof, 0);
+  // no projectile, no release
+  g.projectile.reset();
+  limits.catapult = false;
+  EXPECT_TRUE(develop(g, limits).body.held.empty());
+}
+
+// photosensors on every part: three more per part, after its contact sensor, each in its own
+// part's frame; a part's local_sensor inputs reach them; the creature's three stay last
+TEST(Develop, PhotosensorsOnEveryPart) {
+  Genome g;
+  g.nodes.push_back(box({0.4, 0.4, 0.2}, JointType::fixed));
+  g.nodes.push_back(box({0.3, 0.1, 0.1}));
+  g.connections.push_back(link(0, 1, {1, 0, 0}));
+  GenomeLimits limits;
+  const BodyPlan root_only = develop(g, limits).body;
+  limits.photosensors = Photosensors::every_part;
+  const BodyPlan every = develop(g, limits).body;
+  ASSERT_EQ(every.sensors.size(), root_only.sensors.size() + 6);
+  // root: contact, photo x3; child: angle, contact, photo x3; the creature's photo x3
+  const SensorKind kinds[] = {SensorKind::contact, SensorKind::photo,       SensorKind::photo,
+                              SensorKind::photo,   SensorKind::joint_angle, SensorKind::contact,
+                              SensorKind::photo,   SensorKind::photo,       SensorKind::photo,
+                              SensorKind::photo,   SensorKind::photo,       SensorKind::photo};
+  ASSERT_EQ(every.sensors.size(), std::size(kinds));
+  for (std::size_t s = 0; s < every.sensors.size(); ++s)
+    EXPECT_EQ(every.sensors[s].kind, kinds[s]) << s;
+  EXPECT_EQ(every.sensors[6].part, 1);
+  EXPECT_EQ(every.sensors[8].axis, 2);
+  EXPECT_EQ(every.sensors[9].part, 0);
+}
+
 }  // namespace
 }  // namespace cambrian::graph

@@ -234,5 +234,75 @@ TEST(Operators, RespectTightLimits) {
   }
 }
 
+// a catapult's limits (genome.catapult = true)
+GenomeLimits catapultLimits(bool projectile_mutation = false) {
+  GenomeLimits limits;
+  limits.catapult = true;
+  limits.projectile_mutation = projectile_mutation;
+  return limits;
+}
+
+// operators keep one arm and one projectile: a child's projectile is its first parent's (and its
+// arm is that parent's node 0); mutation moves the grip and the release wire always, the block
+// only with projectile_mutation
+TEST(Operators, KeepOneArmAndOneProjectile) {
+  int moved = 0, resized_fixed = 0, resized_free = 0;
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    const Genome a = randomGenome(catapultLimits(), 11, 0, i);
+    const Genome b = randomGenome(catapultLimits(), 12, 0, i);
+    Rng rng(13, RngPurpose::variation, 0, i);
+    const Genome child = crossover(a, b, catapultLimits(), rng);
+    EXPECT_EQ(child.projectile, a.projectile);
+    EXPECT_EQ(child.nodes[0], a.nodes[0]);
+    const Genome grafted = graft(a, b, catapultLimits(), rng);
+    EXPECT_EQ(grafted.projectile, a.projectile);
+    EXPECT_EQ(grafted.nodes[0], a.nodes[0]);
+    MutationSettings settings;
+    settings.parameter_rate = 0.5;
+    const Genome fixed = mutate(a, catapultLimits(false), settings, rng);
+    ASSERT_TRUE(fixed.projectile.has_value());
+    EXPECT_NO_THROW(validateGenome(fixed, catapultLimits(false)));
+    moved += fixed.projectile->position != a.projectile->position ? 1 : 0;
+    resized_fixed += fixed.projectile->dimensions != a.projectile->dimensions ? 1 : 0;
+    const Genome free = mutate(a, catapultLimits(true), settings, rng);
+    resized_free += free.projectile->dimensions != a.projectile->dimensions ? 1 : 0;
+  }
+  EXPECT_GT(moved, 150);
+  EXPECT_EQ(resized_fixed, 0);
+  EXPECT_GT(resized_free, 150);
+}
+
+// grafting into the root brings the second parent's root along every time; into any node, a
+// graft below it leaves that root behind (dropped, unreachable) about two times in three
+TEST(Operators, GraftIntoAnyNode) {
+  Genome a;
+  a.nodes.emplace_back();
+  a.nodes[0].dimensions = {0.5, 0.5, 0.5};
+  Genome b;
+  for (double side : {0.11, 0.22, 0.33}) {
+    b.nodes.emplace_back();
+    b.nodes.back().dimensions = {side, side, side};
+  }
+  for (std::uint16_t from : {0, 1}) {
+    ConnectionGene c;
+    c.from = from;
+    c.to = static_cast<std::uint16_t>(from + 1);
+    b.connections.push_back(c);
+  }
+  auto has_b_root = [](const Genome& g) {
+    return std::any_of(g.nodes.begin(), g.nodes.end(),
+                       [](const PartGene& n) { return n.dimensions.x == 0.11; });
+  };
+  int root_kept = 0, any_kept = 0;
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    Rng rng(17, RngPurpose::variation, 0, i);
+    root_kept += has_b_root(graft(a, b, GenomeLimits{}, rng, GraftInto::root)) ? 1 : 0;
+    any_kept += has_b_root(graft(a, b, GenomeLimits{}, rng, GraftInto::any_node)) ? 1 : 0;
+  }
+  EXPECT_EQ(root_kept, 300);
+  EXPECT_GT(any_kept, 60);
+  EXPECT_LT(any_kept, 140);
+}
+
 }  // namespace
 }  // namespace cambrian::graph

@@ -58,7 +58,7 @@ TEST(SerializeGenome, HeaderLayout) {
   std::vector<std::uint8_t> bytes = serializeGenome(Genome{});
   ASSERT_GE(bytes.size(), 8u);
   EXPECT_EQ(std::memcmp(bytes.data(), "CMBG", 4), 0);
-  EXPECT_EQ(bytes[4], kGenomeFormatVersion & 0xff);
+  EXPECT_EQ(bytes[4], 1);  // no projectile: the oldest version that carries it
   EXPECT_EQ(bytes[5], 0);
   EXPECT_EQ(bytes[6], 0);
   EXPECT_EQ(bytes[7], 0);
@@ -159,7 +159,7 @@ TEST(SerializeGenome, BadMagic) {
 TEST(SerializeGenome, NewerVersion) {
   std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(GenomeLimits{}, 1));
   bytes[4] = 9;
-  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (1)");
+  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (2)");
   bytes[4] = 0;
   EXPECT_NE(failure(bytes).find("version 0"), std::string::npos);
 }
@@ -193,5 +193,30 @@ TEST(SerializeGenome, BadFlagRejected) {
       << failure(bytes);
 }
 
+// a catapult's limits (genome.catapult = true)
+GenomeLimits catapultLimits(bool projectile_mutation = false) {
+  GenomeLimits limits;
+  limits.catapult = true;
+  limits.projectile_mutation = projectile_mutation;
+  return limits;
+}
+
+// a catapult's genome round-trips through version 2 bytes; every other genome is still written
+// as version 1, byte for byte what it was
+TEST(Serialize, TheProjectileTravelsInVersion2) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Genome catapult = randomGenome(catapultLimits(true), seed);
+    ASSERT_TRUE(catapult.projectile.has_value());
+    const std::vector<std::uint8_t> bytes = serializeGenome(catapult);
+    EXPECT_EQ(bytes[4], 2);
+    EXPECT_EQ(deserializeGenome(bytes.data(), bytes.size()), catapult);
+    const Genome walker = randomGenome(GenomeLimits{}, seed);
+    EXPECT_EQ(serializeGenome(walker)[4], 1);
+  }
+  // cut inside the projectile: refused, naming it
+  const std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(catapultLimits(), 3));
+  const std::vector<std::uint8_t> cut(bytes.begin(), bytes.end() - 9);
+  EXPECT_NE(failure(cut).find("projectile"), std::string::npos) << failure(cut);
+}
 }  // namespace
 }  // namespace cambrian::graph

@@ -281,5 +281,35 @@ TEST(GenomeText, DefaultSourceName) {
   }
 }
 
+// a catapult's limits (genome.catapult = true)
+GenomeLimits catapultLimits(bool projectile_mutation = false) {
+  GenomeLimits limits;
+  limits.catapult = true;
+  limits.projectile_mutation = projectile_mutation;
+  return limits;
+}
+
+// a catapult's projectile is one line of the text form, read back exactly; a second one is an
+// error naming its line
+TEST(Text, TheProjectileIsOneLine) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Genome g = randomGenome(catapultLimits(true), seed);
+    const std::string text = genomeToText(g);
+    EXPECT_NE(text.find("\nprojectile size "), std::string::npos);
+    EXPECT_EQ(parseGenomeText(text), g);
+  }
+  const std::string text =
+      "cambrian-genome 2\nnode 0 size 0.5 0.5 0.5\nprojectile size 0.2 0.2 0.2 density 900 "
+      "position 0 0 1 trigger constant 0 0 1\nprojectile size 0.1 0.1 0.1\nend\n";
+  EXPECT_NE(failure(text).find(":4"), std::string::npos) << failure(text);
+  EXPECT_NE(failure(text).find("one projectile"), std::string::npos) << failure(text);
+  const Genome g = parseGenomeText(
+      "cambrian-genome 2\nnode 0 size 0.5 0.5 0.5\nprojectile size 0.2 0.3 0.4 density 900 "
+      "position 0 0 1 trigger constant 0 0 1\nend\n");
+  ASSERT_TRUE(g.projectile.has_value());
+  EXPECT_EQ(g.projectile->dimensions, (Vec3{0.2, 0.3, 0.4}));
+  EXPECT_EQ(g.projectile->density, 900);
+  EXPECT_EQ(g.projectile->trigger.weight, 1);
+}
 }  // namespace
 }  // namespace cambrian::graph

@@ -182,5 +182,32 @@ TEST(ValidateGenome, ErrorExitCode) {
   }
 }
 
+// a catapult's limits (genome.catapult = true)
+GenomeLimits catapultLimits(bool projectile_mutation = false) {
+  GenomeLimits limits;
+  limits.catapult = true;
+  limits.projectile_mutation = projectile_mutation;
+  return limits;
+}
+
+// a projectile in every catapult genome and in no other; its fields within their ranges
+TEST(Validate, AProjectileExactlyInCatapults) {
+  Genome catapult = randomGenome(catapultLimits(), 5);
+  EXPECT_NO_THROW(validateGenome(catapult, catapultLimits()));
+  auto message = [](const Genome& g, const GenomeLimits& limits) {
+    try {
+      validateGenome(g, limits);
+    } catch (const GenomeError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message(catapult, GenomeLimits{}).find("genome.catapult = false"), std::string::npos);
+  Genome walker = randomGenome(GenomeLimits{}, 5);
+  EXPECT_NE(message(walker, catapultLimits()).find("has no projectile"), std::string::npos);
+  catapult.projectile->dimensions.y = 9;
+  EXPECT_NE(message(catapult, catapultLimits()).find("projectile"), std::string::npos);
+  EXPECT_NE(message(catapult, catapultLimits()).find("size.y"), std::string::npos);
+}
 }  // namespace
 }  // namespace cambrian::graph
