@@ -39,6 +39,8 @@ Simulation::Simulation(const BodyPlan& plan, const ControllerPlan* controller,
   for (std::size_t i = 0; i < plan_.parts.size(); ++i)
     birth_position_[i] = world_->partPosition(static_cast<int>(i));
   previous_position_ = birth_position_;
+  for (std::size_t h = 0; h < plan_.held.size(); ++h)
+    previous_held_.push_back(world_->heldPose(static_cast<int>(h)).position);
 
   // the energy watch: its unit and its starting balance
   double mass = 0, length = bodyLength(plan_);
@@ -126,6 +128,26 @@ void Simulation::monitor() {
     previous_position_[i] = position;
   }
   fastest_part_speed_ = std::sqrt(largest_step_sq) / settings_.time_step;
+
+  // what the creature holds or has thrown: finite and no faster than a part may be (it may go
+  // as far as it is thrown)
+  for (std::size_t h = 0; h < previous_held_.size(); ++h) {
+    const Vec3 position = world_->heldPose(static_cast<int>(h)).position;
+    if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z)) {
+      fail(EvalStatus::non_finite,
+           "held object " + std::to_string(h) + " has a non-finite position");
+      return;
+    }
+    const Vec3 moved = position - previous_held_[h];
+    if (dot(moved, moved) > max_step * max_step) {
+      std::ostringstream message;
+      message << "held object " << h << " moved at " << norm(moved) / settings_.time_step
+              << " m/s (physics.max_speed " << settings_.max_speed << ") at step " << steps_;
+      fail(EvalStatus::exploded, message.str());
+      return;
+    }
+    previous_held_[h] = position;
+  }
   watchEnergy();
 }
 

@@ -98,6 +98,7 @@ class Simulation {
   bool reads_contacts_ = false;  // what the sensors need of the world
   Vec3 light_;                   // light(), moveLight()
   std::vector<Vec3> birth_position_, previous_position_;
+  std::vector<Vec3> previous_held_;  // each held object's position at the last step
   double energy_scale_ = 0;
   double lowest_balance_ = 0;  // lowest energy minus work bound so far
   double unexplained_energy_ = 0;

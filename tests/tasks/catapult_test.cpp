@@ -1,6 +1,7 @@
 // Tests of the catapult task: Chaumont et al.'s F_D and F_a by hand; a block let go beside a
 // slab drops without travelling, at the mechanism's time — step 30 when the network is silent or
-// pulls the other way, at once when it signals; a body with nothing to throw is refused.
+// pulls the other way, at once when it signals; too fast a projectile has exploded; a body with
+// nothing to throw is refused.
 #include "tasks/catapult.hpp"
 
 #include "cambrian/encodings.hpp"
@@ -30,7 +31,8 @@ TEST(Catapult, FitnessByHand) {
 
 // a 1 x 1 x 0.2 m slab lying on the ground holds a 0.1 m block at the middle of its +x face; the
 // release wire is the constant `trigger`
-Outcome dropBeside(double trigger, const char* fitness = "distance") {
+Outcome dropBeside(double trigger, const char* fitness = "distance",
+                   const char* max_speed = "50") {
   const std::string text =
       "cambrian-genome 2\nnode 0 size 1 1 0.2 density 1000 joint rigid limit 1 1 1 recursion 1\n"
       "projectile size 0.1 0.1 0.1 density 1000 position 1 0 0 trigger constant 0 0 " +
@@ -44,7 +46,8 @@ Outcome dropBeside(double trigger, const char* fitness = "distance") {
            {"task.target_bearing", "90"},
            {"genome.catapult", "true"},
            {"physics.time_step", "0.016666666666666667"},
-           {"physics.substeps", "4"}})
+           {"physics.substeps", "4"},
+           {"physics.max_speed", max_speed}})
     settings.set(key, value);
   settings.check();
   return evaluate(graph::makeGenotype(graph::parseGenomeText(text)), settings, 0);
@@ -72,6 +75,14 @@ TEST(Catapult, TheMechanismLetsGoByStep30) {
   EXPECT_DOUBLE_EQ(dropBeside(0).measure("release_time"), 30.0 / 60);
   EXPECT_DOUBLE_EQ(dropBeside(-1).measure("release_time"), 30.0 / 60);
   EXPECT_LE(dropBeside(1).measure("release_time"), 2.0 / 60);
+}
+
+// the projectile is watched like a part: faster than physics.max_speed has exploded
+TEST(Catapult, AProjectileTooFastHasExploded) {
+  const Outcome outcome = dropBeside(0, "distance", "0.5");
+  EXPECT_EQ(outcome.status, EvalStatus::exploded) << outcome.message;
+  EXPECT_NE(outcome.message.find("held object 0 moved at"), std::string::npos) << outcome.message;
+  EXPECT_EQ(outcome.fitness, kWorstFitness);
 }
 
 // a body that holds nothing cannot be a catapult
