@@ -1,8 +1,8 @@
 // cambrian: the catapult task — Chaumont et al. (2007) 4.2: a creature whose root part, the arm,
 // holds a projectile (genome.catapult) lets go of it; the projectile is followed from where it
 // was let go until it comes to rest, horizontally, and the fitness is that distance (F_D = D_p)
-// or, aiming at a target, F_a = alpha_p D_p - alpha_t D_t with D_t the least distance of its
-// path from the target.
+// or, aiming at a target point, F_a = alpha_p D_p - alpha_t D_t with D_t the least distance of
+// its centre's path from that point.
 #include "tasks/catapult.hpp"
 
 #include "core/settings.hpp"
@@ -47,6 +47,7 @@ class CatapultTask : public Task {
   CatapultFitness fitness = CatapultFitness::distance;
   double target_distance = 5;  ///< m from the birth place, horizontally
   double target_bearing = 0;   ///< degrees from +x, anticlockwise from above
+  double target_height = 0;    ///< m above the ground
   double alpha_distance = 1;   ///< alpha_p (Chaumont et al.: 1)
   double alpha_miss = 1;       ///< alpha_t (Chaumont et al.: 1)
 };
@@ -56,7 +57,7 @@ void CatapultTask::declareSettings(SettingsSchema& s) {
               {{"distance", CatapultFitness::distance}, {"aim", CatapultFitness::aim}},
               "catapult: distance (F_D = D_p, how far the projectile went from where it was let "
               "go to where it came to rest) | aim (F_a = alpha_p D_p - alpha_t D_t, D_t the "
-              "least distance of its path from the target)");
+              "least distance of its path from the target point)");
   s.add("task.target_distance", target_distance,
         "catapult: the target's horizontal distance from the birth place, m")
       .require([this] { return target_distance >= 0 && std::isfinite(target_distance); },
@@ -64,6 +65,10 @@ void CatapultTask::declareSettings(SettingsSchema& s) {
   s.add("task.target_bearing", target_bearing,
         "catapult: the target's bearing, degrees from +x (anticlockwise from above)")
       .require([this] { return std::isfinite(target_bearing); }, "must be finite");
+  s.add("task.target_height", target_height,
+        "catapult: the target's height above the ground, m (0: a point on the ground)")
+      .require([this] { return target_height >= 0 && std::isfinite(target_height); },
+               "must be >= 0 and finite");
   s.add("task.alpha_distance", alpha_distance, "catapult aim: alpha_p, the weight of D_p")
       .require([this] { return alpha_distance >= 0 && std::isfinite(alpha_distance); },
                "must be >= 0 and finite");
@@ -90,7 +95,8 @@ void CatapultTask::run(Episode& episode) const {
     return;
   const double step = episode.simulation().timeStep();
   const double bearing = target_bearing * kPi / 180;
-  const Vec3 target = Vec3{std::cos(bearing), std::sin(bearing), 0} * target_distance;
+  const Vec3 target =
+      Vec3{std::cos(bearing), std::sin(bearing), 0} * target_distance + Vec3{0, 0, target_height};
   ThrowJury jury(
       target, s.rest_speed,
       std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(s.rest_time / step))));
@@ -105,7 +111,8 @@ void CatapultTask::run(Episode& episode) const {
   outcome.measures.push_back(
       {"release_time", jury.released() ? static_cast<double>(jury.releaseStep()) * step : -1.0});
   outcome.fitness =
-      catapultFitness(fitness, distance, jury.miss(), target_distance, alpha_distance, alpha_miss);
+      catapultFitness(fitness, distance, jury.miss(), std::hypot(target_distance, target_height),
+                      alpha_distance, alpha_miss);
 }
 
 /// The catapult task's prototype (for the registry).

@@ -13,8 +13,8 @@ enum class CatapultFitness {
 double catapultAim(double distance, double miss, double alpha_distance, double alpha_miss);
 
 /// The fitness of a throw: D_p for `distance`; for `aim`, F_a raised by alpha_t times the
-/// target's distance `target_range` from the birth place (the same order as F_a: a throw that
-/// misses by no more than the target's own distance scores >= 0), never below 0.
+/// target's distance `target_range` from the birth place on the ground (the same order as F_a:
+/// a throw that misses by no more than that scores >= 0), never below 0.
 double catapultFitness(CatapultFitness kind, double distance, double miss, double target_range,
                        double alpha_distance, double alpha_miss);
 

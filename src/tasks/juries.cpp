@@ -86,7 +86,8 @@ void ThrowJury::begin(const Simulation& simulation) {
   resting_ = 0;
   distance_ = 0;
   last_ = simulation.world().heldPose(0).position;
-  miss_ = horizontal(last_, target_);
+  const Vec3 away = last_ - target_;
+  miss_ = std::sqrt(dot(away, away));
 }
 
 void ThrowJury::observe(const Simulation& simulation) {
@@ -102,15 +103,17 @@ void ThrowJury::observe(const Simulation& simulation) {
     released_ = true;
     release_step_ = steps_ - 1;
     release_point_ = last_;
-    miss_ = horizontal(last_, target_);
+    const Vec3 away = last_ - target_;
+    miss_ = std::sqrt(dot(away, away));
   }
 
-  // the path: nearest the target on the segment it moved along this step
-  const Vec3 a{last_.x, last_.y, 0}, b{here.x, here.y, 0}, t{target_.x, target_.y, 0};
-  const Vec3 ab = b - a;
+  // the path: nearest the target on the segment its centre moved along this step
+  const Vec3 ab = here - last_;
   const double length_sq = dot(ab, ab);
-  const double u = length_sq > 0 ? std::clamp(dot(t - a, ab) / length_sq, 0.0, 1.0) : 0.0;
-  miss_ = std::min(miss_, horizontal(a + ab * u, t));
+  const double u =
+      length_sq > 0 ? std::clamp(dot(target_ - last_, ab) / length_sq, 0.0, 1.0) : 0.0;
+  const Vec3 nearest = last_ + ab * u - target_;
+  miss_ = std::min(miss_, std::sqrt(dot(nearest, nearest)));
   distance_ = horizontal(release_point_, here);
 
   // at rest: slower than rest_speed for rest_steps steps in a row

@@ -92,8 +92,8 @@ class HeightJury : public Jury {
 };
 
 /// "distance": Chaumont et al.'s throw (4.2). Held object 0 is followed from the step it is let
-/// go: the horizontal distance from where it was let go to where it is (D_p), the least
-/// horizontal distance of its path from `target` (D_t), and whether it has come to rest (its
+/// go: the horizontal distance from where it was let go to where it is (D_p), the least distance
+/// of its centre's path from the point `target` (D_t), and whether it has come to rest (its
 /// centre slower than `rest_speed` for `rest_steps` steps in a row), which finishes the jury.
 class ThrowJury : public Jury {
  public:
@@ -108,7 +108,7 @@ class ThrowJury : public Jury {
   bool released() const { return released_; }
   /// Measured steps before it was let go (-1 while held).
   std::int64_t releaseStep() const { return release_step_; }
-  /// D_t, m: the target's distance from the release point while held.
+  /// D_t, m: the target's distance from the projectile while held.
   double miss() const { return miss_; }
 
  private:

@@ -53,8 +53,8 @@ Outcome dropBeside(double trigger, const char* fitness = "distance",
   return evaluate(graph::makeGenotype(graph::parseGenomeText(text)), settings, 0);
 }
 
-// let go with no throw: it drops beside the slab; the target (3 m along +y) is as far from its
-// path as from the release point, and F_a = 0 - that
+// let go with no throw: it drops beside the slab; the target (3 m along +y, on the ground) is as
+// far from its path as from the release point, and F_a = 0 - that
 TEST(Catapult, ADroppedBlockTravelsNothing) {
   const Outcome outcome = dropBeside(0);
   ASSERT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
