@@ -110,8 +110,7 @@ void ThrowJury::observe(const Simulation& simulation) {
   // the path: nearest the target on the segment its centre moved along this step
   const Vec3 ab = here - last_;
   const double length_sq = dot(ab, ab);
-  const double u =
-      length_sq > 0 ? std::clamp(dot(target_ - last_, ab) / length_sq, 0.0, 1.0) : 0.0;
+  const double u = length_sq > 0 ? std::clamp(dot(target_ - last_, ab) / length_sq, 0.0, 1.0) : 0.0;
   const Vec3 nearest = last_ + ab * u - target_;
   miss_ = std::min(miss_, std::sqrt(dot(nearest, nearest)));
   distance_ = horizontal(release_point_, here);

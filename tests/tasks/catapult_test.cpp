@@ -31,8 +31,7 @@ TEST(Catapult, FitnessByHand) {
 
 // a 1 x 1 x 0.2 m slab lying on the ground holds a 0.1 m block at the middle of its +x face; the
 // release wire is the constant `trigger`
-Outcome dropBeside(double trigger, const char* fitness = "distance",
-                   const char* max_speed = "50") {
+Outcome dropBeside(double trigger, const char* fitness = "distance", const char* max_speed = "50") {
   const std::string text =
       "cambrian-genome 2\nnode 0 size 1 1 0.2 density 1000 joint rigid limit 1 1 1 recursion 1\n"
       "projectile size 0.1 0.1 0.1 density 1000 position 1 0 0 trigger constant 0 0 " +
