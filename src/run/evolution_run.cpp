@@ -115,8 +115,10 @@ class EvolutionRun {
     result_.digest = digest_.hex();
     result_.rank0_cpu_seconds = processCpuSeconds() - cpu_start_;
     result_.wall_seconds = secondsSince(run_start_);
-    if (history_)
+    if (history_) {
       history_->close();
+      clearHistoryStarting(run_.out_dir);
+    }
     try {
       writeTables(run_.out_dir, result_, run_.measures);
     } catch (const Error& e) {
@@ -171,6 +173,7 @@ class EvolutionRun {
       out_ << "cambrian evolve: no checkpoint in " << run_.out_dir << ", starting fresh"
            << std::endl;
     removeCheckpoints(run_.out_dir);
+    markHistoryStarting(run_.out_dir, attributes);
     history_ = std::make_unique<HistoryWriter>(
         run_.out_dir + "/history.h5", historyAttributes(), run_.measures,
         historyChunkRows(static_cast<std::uint64_t>(settings_.population)));
@@ -231,6 +234,7 @@ class EvolutionRun {
       testKillPoint("checkpoint_" + stage, next_generation - 1);
     });
     testKillPoint("checkpoint_done", next_generation - 1);
+    clearHistoryStarting(run_.out_dir);
     double seconds = std::max(secondsSince(begin), 1e-9);
     checkpoint_seconds_max_ = std::max(checkpoint_seconds_max_, seconds);
     checkpointed_ = next_generation;

@@ -7,6 +7,7 @@
 #include "core/bytes.hpp"
 #include "core/hash.hpp"
 #include "core/outcome_bytes.hpp"
+#include "core/small_file.hpp"
 #include "store/hdf5_io.hpp"
 #include "store/history.hpp"
 #include "store/read_in_child.hpp"
@@ -19,6 +20,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <system_error>
 #include <unistd.h>
@@ -511,6 +513,11 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir,
       generations = reader.generations();
       stored = reader.attributes();
     } catch (const Error& e) {
+      // this run's own history, killed inside its first writes: started again
+      const SmallFile marker = readSmallFile(historyStartingPath(dir), 4096);
+      if (this_run && marker.problem.empty() &&
+          marker.bytes == this_run->config_hash + " " + std::to_string(this_run->seed) + "\n")
+        return std::nullopt;
       throw Error(ExitCode::checkpoint,
                   std::string(e.what()) + "; there is no " + path +
                       " to continue from, and the history is not one this run could replace "
@@ -536,6 +543,24 @@ std::optional<CheckpointState> findCheckpoint(const std::string& dir,
                       fresh);
   }
   return std::nullopt;
+}
+
+std::string historyStartingPath(const std::string& dir) {
+  return dir + "/history.h5.starting";
+}
+
+void markHistoryStarting(const std::string& dir, const HistoryAttributes& run) {
+  const std::string path = historyStartingPath(dir);
+  std::ofstream out(path, std::ios::trunc);
+  out << run.config_hash << " " << run.seed << "\n";
+  out.close();
+  if (!out)
+    throw Error(ExitCode::output_file, path + ": cannot write");
+}
+
+void clearHistoryStarting(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::remove(historyStartingPath(dir), error);
 }
 
 void removeCheckpoints(const std::string& dir) {

@@ -68,9 +68,22 @@ CheckpointState readCheckpointHere(const std::string& path);
 /// the message says whether checkpoint.prev.h5 is good (no automatic fallback) and that
 /// `--fresh` starts over. A history of this run (`this_run`: same config hash and seed) that
 /// holds generation 0 only is no obstacle: it is what a run killed between generation 0's append
-/// and its first checkpoint leaves, and starting fresh writes the same row again.
+/// and its first checkpoint leaves, and starting fresh writes the same row again; nor is an
+/// unreadable history.h5 beside this run's history.h5.starting marker.
 std::optional<CheckpointState> findCheckpoint(const std::string& dir,
                                               const HistoryAttributes* this_run = nullptr);
+
+/// DIR/history.h5.starting: written (this run's config hash and seed) just before a fresh run
+/// creates DIR/history.h5, removed once its first checkpoint is written or the run closes. A
+/// run killed in between can leave an unreadable history.h5 (killed inside HDF5's first
+/// writes); findCheckpoint lets the same run (same hash and seed) start that history again,
+/// and still refuses to touch an unreadable history.h5 without the marker.
+std::string historyStartingPath(const std::string& dir);
+/// Writes DIR/history.h5.starting for `run`. Throws Error(output_file) naming it on failure.
+void markHistoryStarting(const std::string& dir, const HistoryAttributes& run);
+/// Removes DIR/history.h5.starting (if there is one; a failure is ignored: the marker only ever
+/// allows this run to start its own unreadable history again).
+void clearHistoryStarting(const std::string& dir);
 
 /// Removes DIR/checkpoint.h5, checkpoint.prev.h5 and checkpoint.h5.tmp (a fresh start).
 /// Throws Error(output_file) naming a file that cannot be removed.

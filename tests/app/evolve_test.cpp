@@ -177,6 +177,36 @@ TEST(EvolveCommand, AJobKilledBeforeItsFirstCheckpointStartsAgainOnTheSameComman
   EXPECT_EQ(other.exit_code, 6) << other.output;
 }
 
+TEST(EvolveCommand, AHistoryLeftUnreadableByAKillAtItsStartIsStartedAgain) {
+  // killed inside HDF5's first writes: history.h5 unreadable, the run's marker beside it
+  std::string dir = freshDir("killed_in_first_writes");
+  auto killed = runCambrian(tinyRun(dir, 3) + " --run.test_kill_at history:0");
+  EXPECT_NE(killed.exit_code, 0) << killed.output;
+  ASSERT_TRUE(std::filesystem::exists(dir + "/history.h5.starting"));
+  std::filesystem::resize_file(dir + "/history.h5", 100);  // the HDF5 signature, cut short
+
+  // the same command starts it again and ends as a straight run does; the marker goes
+  auto again = runCambrian(tinyRun(dir, 3));
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("starting fresh"), std::string::npos) << again.output;
+  auto straight = runCambrian(tinyRun(freshDir("killed_in_first_writes_straight"), 3));
+  std::string digest = test::lineStartingWith(straight.output, "digest ");
+  ASSERT_FALSE(digest.empty()) << straight.output;
+  EXPECT_EQ(test::lineStartingWith(again.output, "digest "), digest);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/history.h5.starting"));
+
+  // another seed's run, or the same run without its marker, leaves such a file alone
+  auto killed_again = runCambrian(tinyRun(dir, 3) + " --fresh --run.test_kill_at history:0");
+  EXPECT_NE(killed_again.exit_code, 0) << killed_again.output;
+  std::filesystem::resize_file(dir + "/history.h5", 100);
+  auto other = runCambrian(tinyRun(dir, 3) + " --seed 99");
+  EXPECT_EQ(other.exit_code, 6) << other.output;
+  std::filesystem::remove(dir + "/history.h5.starting");
+  auto unmarked = runCambrian(tinyRun(dir, 3));
+  EXPECT_EQ(unmarked.exit_code, 6) << unmarked.output;
+  EXPECT_EQ(std::filesystem::file_size(dir + "/history.h5"), 100u);
+}
+
 TEST(EvolveCommand, ASecondRunOnTheSameDirectoryIsRefused) {
   std::string dir = freshDir("locked");
   // another process (this test) holds the directory's lock
