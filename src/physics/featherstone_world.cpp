@@ -741,23 +741,30 @@ void FeatherstoneWorld::addObjects() {
   FeatherstoneObjects& b = *bullet_;
   for (std::size_t k = 0; k < environment_.objects.size(); ++k) {
     const FreeObject& object = environment_.objects[k];
-    b.object_shapes.push_back(shapeOf(object.shape, object.size));
-    btCollisionShape* shape = b.object_shapes.back().get();
-    btVector3 inertia(0, 0, 0);
-    if (object.mass > 0)
-      shape->calculateLocalInertia(object.mass, inertia);
-    btTransform start(toBt(object.pose.rotation), toBt(object.pose.position));
-    b.object_states.push_back(std::make_unique<btDefaultMotionState>(start));
-    btRigidBody::btRigidBodyConstructionInfo info(object.mass, b.object_states.back().get(), shape,
-                                                  inertia);
-    info.m_friction = object.material.friction;
-    info.m_restitution =
-        object.material.restitution < 0 ? physics_.restitution : object.material.restitution;
-    b.objects.push_back(std::make_unique<btRigidBody>(info));
-    b.objects.back()->setUserIndex(objectIndex(static_cast<int>(k)));
-    anchorFriction(*b.objects.back());
-    b.world.addRigidBody(b.objects.back().get());
+    const btTransform start(toBt(object.pose.rotation), toBt(object.pose.position));
+    b.world.addRigidBody(
+        &addRigidBody(object.shape, object.size, object.mass, object.material, start));
   }
+}
+
+btRigidBody& FeatherstoneWorld::addRigidBody(PartShape shape_kind, Vec3 size, double mass,
+                                             const Material& material, const btTransform& start) {
+  // the shape, the motion state and the body, kept by the world's objects; not yet in the world
+  FeatherstoneObjects& b = *bullet_;
+  b.object_shapes.push_back(shapeOf(shape_kind, size));
+  btCollisionShape* shape = b.object_shapes.back().get();
+  btVector3 inertia(0, 0, 0);
+  if (mass > 0)
+    shape->calculateLocalInertia(mass, inertia);
+  b.object_states.push_back(std::make_unique<btDefaultMotionState>(start));
+  btRigidBody::btRigidBodyConstructionInfo info(mass, b.object_states.back().get(), shape, inertia);
+  info.m_friction = material.friction;
+  info.m_restitution = material.restitution < 0 ? physics_.restitution : material.restitution;
+  b.objects.push_back(std::make_unique<btRigidBody>(info));
+  btRigidBody& body = *b.objects.back();
+  body.setUserIndex(objectIndex(static_cast<int>(b.objects.size() - 1)));
+  anchorFriction(body);
+  return body;
 }
 
 void FeatherstoneWorld::addHeldObjects() {
@@ -773,25 +780,12 @@ void FeatherstoneWorld::addHeldObjects() {
                                            std::to_string(held.part) + " or has no mass");
       return;
     }
-    b.object_shapes.push_back(shapeOf(held.shape, held.size));
-    btCollisionShape* shape = b.object_shapes.back().get();
-    btVector3 inertia(0, 0, 0);
-    shape->calculateLocalInertia(held.mass, inertia);
     PartCollider& holder = *b.colliders[static_cast<std::size_t>(held.part)];
     const btTransform in_part(toBt(held.pose.rotation), toBt(held.pose.position));
-    const btTransform start = holder.getWorldTransform() * in_part;
-    b.object_states.push_back(std::make_unique<btDefaultMotionState>(start));
-    btRigidBody::btRigidBodyConstructionInfo info(held.mass, b.object_states.back().get(), shape,
-                                                  inertia);
-    info.m_friction = held.material.friction;
-    info.m_restitution =
-        held.material.restitution < 0 ? physics_.restitution : held.material.restitution;
-    b.objects.push_back(std::make_unique<btRigidBody>(info));
-    btRigidBody& object = *b.objects.back();
-    object.setUserIndex(objectIndex(static_cast<int>(b.objects.size() - 1)));
+    btRigidBody& object = addRigidBody(held.shape, held.size, held.mass, held.material,
+                                       holder.getWorldTransform() * in_part);
     object.setActivationState(DISABLE_DEACTIVATION);
     object.setIgnoreCollisionCheck(&holder, true);
-    anchorFriction(object);
     b.world.addRigidBody(&object);
     const btMatrix3x3 frame_in_part = in_part.getBasis();
     b.holds.push_back(std::make_unique<btMultiBodyFixedConstraint>(

@@ -12,6 +12,8 @@
 #include <memory>
 
 class btCollisionObject;
+class btRigidBody;
+class btTransform;
 
 namespace cambrian {
 
@@ -50,6 +52,8 @@ class FeatherstoneWorld : public World {
   void build(double birth_height);
   void addObjects();
   void addHeldObjects();
+  btRigidBody& addRigidBody(PartShape shape, Vec3 size, double mass, const Material& material,
+                            const btTransform& start);
   void release(std::span<const double> commands);
   int heldIndex(int user_index) const;  // the held object a collision object is, or -1
   void checkBirthPenetration();

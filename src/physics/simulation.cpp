@@ -93,28 +93,34 @@ void Simulation::readSensors() {
   }
 }
 
-void Simulation::monitor() {
+bool Simulation::watchStep(const char* what, std::size_t index, Vec3 position, Vec3 previous) {
+  // non-finite state, or a numerical explosion: too fast (messages made only on failure)
+  if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z)) {
+    fail(EvalStatus::non_finite,
+         std::string(what) + " " + std::to_string(index) + " has a non-finite position");
+    return false;
+  }
+  const Vec3 moved = position - previous;
   const double max_step = settings_.max_speed * settings_.time_step;
+  if (dot(moved, moved) > max_step * max_step) {
+    std::ostringstream message;
+    message << what << " " << index << " moved at " << norm(moved) / settings_.time_step
+            << " m/s (physics.max_speed " << settings_.max_speed << ") at step " << steps_;
+    fail(EvalStatus::exploded, message.str());
+    return false;
+  }
+  return true;
+}
+
+void Simulation::monitor() {
   const double max_displacement_sq = settings_.max_displacement * settings_.max_displacement;
   double largest_step_sq = 0;  // the fastest part's displacement this step, squared
   for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
     Vec3 position = world_->partPosition(static_cast<int>(i));
-
-    // non-finite state
-    if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z)) {
-      fail(EvalStatus::non_finite, "part " + std::to_string(i) + " has a non-finite position");
+    if (!watchStep("part", i, position, previous_position_[i]))
       return;
-    }
 
-    // numerical explosion: too fast or too far
-    Vec3 moved = position - previous_position_[i];
-    if (dot(moved, moved) > max_step * max_step) {
-      std::ostringstream message;
-      message << "part " << i << " moved at " << norm(moved) / settings_.time_step
-              << " m/s (physics.max_speed " << settings_.max_speed << ") at step " << steps_;
-      fail(EvalStatus::exploded, message.str());
-      return;
-    }
+    // numerical explosion: too far
     Vec3 from_birth = position - birth_position_[i];
     if (dot(from_birth, from_birth) > max_displacement_sq) {
       std::ostringstream message;
@@ -124,28 +130,18 @@ void Simulation::monitor() {
       fail(EvalStatus::exploded, message.str());
       return;
     }
+    const Vec3 moved = position - previous_position_[i];
     largest_step_sq = std::max(largest_step_sq, dot(moved, moved));
     previous_position_[i] = position;
   }
   fastest_part_speed_ = std::sqrt(largest_step_sq) / settings_.time_step;
 
-  // what the creature holds or has thrown: finite and no faster than a part may be (it may go
-  // as far as it is thrown)
+  // what the creature holds or has thrown: watched as a part is, except for the distance (it
+  // may go as far as it is thrown)
   for (std::size_t h = 0; h < previous_held_.size(); ++h) {
     const Vec3 position = world_->heldPose(static_cast<int>(h)).position;
-    if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z)) {
-      fail(EvalStatus::non_finite,
-           "held object " + std::to_string(h) + " has a non-finite position");
+    if (!watchStep("held object", h, position, previous_held_[h]))
       return;
-    }
-    const Vec3 moved = position - previous_held_[h];
-    if (dot(moved, moved) > max_step * max_step) {
-      std::ostringstream message;
-      message << "held object " << h << " moved at " << norm(moved) / settings_.time_step
-              << " m/s (physics.max_speed " << settings_.max_speed << ") at step " << steps_;
-      fail(EvalStatus::exploded, message.str());
-      return;
-    }
     previous_held_[h] = position;
   }
   watchEnergy();

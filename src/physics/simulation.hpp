@@ -82,6 +82,7 @@ class Simulation {
  private:
   void readSensors();
   void monitor();
+  bool watchStep(const char* what, std::size_t index, Vec3 position, Vec3 previous);
   void watchEnergy();
   void fail(EvalStatus status, std::string message);
 

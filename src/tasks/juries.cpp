@@ -86,8 +86,7 @@ void ThrowJury::begin(const Simulation& simulation) {
   resting_ = 0;
   distance_ = 0;
   last_ = simulation.world().heldPose(0).position;
-  const Vec3 away = last_ - target_;
-  miss_ = std::sqrt(dot(away, away));
+  miss_ = norm(last_ - target_);
 }
 
 void ThrowJury::observe(const Simulation& simulation) {
@@ -103,8 +102,7 @@ void ThrowJury::observe(const Simulation& simulation) {
     released_ = true;
     release_step_ = steps_ - 1;
     release_point_ = last_;
-    const Vec3 away = last_ - target_;
-    miss_ = std::sqrt(dot(away, away));
+    miss_ = norm(last_ - target_);
   }
 
   // the path: nearest the target on the segment its centre moved along this step
@@ -112,12 +110,11 @@ void ThrowJury::observe(const Simulation& simulation) {
   const double length_sq = dot(ab, ab);
   const double u = length_sq > 0 ? std::clamp(dot(target_ - last_, ab) / length_sq, 0.0, 1.0) : 0.0;
   const Vec3 nearest = last_ + ab * u - target_;
-  miss_ = std::min(miss_, std::sqrt(dot(nearest, nearest)));
+  miss_ = std::min(miss_, norm(nearest));
   distance_ = horizontal(release_point_, here);
 
   // at rest: slower than rest_speed for rest_steps steps in a row
-  const Vec3 moved = here - last_;
-  resting_ = std::sqrt(dot(moved, moved)) <= rest_speed_ * simulation.timeStep() ? resting_ + 1 : 0;
+  resting_ = std::sqrt(length_sq) <= rest_speed_ * simulation.timeStep() ? resting_ + 1 : 0;
   last_ = here;
 }
 

@@ -3,6 +3,7 @@
 #include "cambrian/encodings.hpp"
 #include "cambrian/rng.hpp"
 
+#include "encodings/directed_graph/catapult_limits.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/directed_graph/genome.hpp"
 #include "encodings/directed_graph/graph.hpp"
@@ -234,13 +235,7 @@ TEST(Operators, RespectTightLimits) {
   }
 }
 
-// a catapult's limits (genome.catapult = true)
-GenomeLimits catapultLimits(bool projectile_mutation = false) {
-  GenomeLimits limits;
-  limits.catapult = true;
-  limits.projectile_mutation = projectile_mutation;
-  return limits;
-}
+using test::catapultLimits;
 
 // operators keep one arm and one projectile: a child's projectile is its first parent's (and its
 // arm is that parent's node 0); mutation moves the grip and the release wire always, the block

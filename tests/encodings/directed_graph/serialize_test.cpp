@@ -2,6 +2,7 @@
 #include "cambrian/error.hpp"
 #include "cambrian/rng.hpp"
 
+#include "encodings/directed_graph/catapult_limits.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/directed_graph/genome.hpp"
 
@@ -193,13 +194,7 @@ TEST(SerializeGenome, BadFlagRejected) {
       << failure(bytes);
 }
 
-// a catapult's limits (genome.catapult = true)
-GenomeLimits catapultLimits(bool projectile_mutation = false) {
-  GenomeLimits limits;
-  limits.catapult = true;
-  limits.projectile_mutation = projectile_mutation;
-  return limits;
-}
+using test::catapultLimits;
 
 // a catapult's genome round-trips through version 2 bytes; every other genome is still written
 // as version 1, byte for byte what it was

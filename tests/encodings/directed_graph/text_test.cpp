@@ -1,6 +1,7 @@
 #include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
 
+#include "encodings/directed_graph/catapult_limits.hpp"
 #include "encodings/directed_graph/cuts.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/directed_graph/genome.hpp"
@@ -281,13 +282,7 @@ TEST(GenomeText, DefaultSourceName) {
   }
 }
 
-// a catapult's limits (genome.catapult = true)
-GenomeLimits catapultLimits(bool projectile_mutation = false) {
-  GenomeLimits limits;
-  limits.catapult = true;
-  limits.projectile_mutation = projectile_mutation;
-  return limits;
-}
+using test::catapultLimits;
 
 // a catapult's projectile is one line of the text form, read back exactly; a second one is an
 // error naming its line

@@ -1,6 +1,7 @@
 #include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
 
+#include "encodings/directed_graph/catapult_limits.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/directed_graph/genome.hpp"
 
@@ -182,13 +183,7 @@ TEST(ValidateGenome, ErrorExitCode) {
   }
 }
 
-// a catapult's limits (genome.catapult = true)
-GenomeLimits catapultLimits(bool projectile_mutation = false) {
-  GenomeLimits limits;
-  limits.catapult = true;
-  limits.projectile_mutation = projectile_mutation;
-  return limits;
-}
+using test::catapultLimits;
 
 // a projectile in every catapult genome and in no other; its fields within their ranges
 TEST(Validate, AProjectileExactlyInCatapults) {
