@@ -113,15 +113,26 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
         "Chaumont et al.'s catapults: the root part is an arm holding a projectile it lets go of "
         "after genome.release_delay controller steps, or earlier on the network's signal");
   s.add("genome.projectile_mutation", g.projectile_mutation,
-        "catapults: mutation may change the projectile's size and density (Chaumont et al.: in "
+        "catapults: mutation may change the projectile's size and shape (Chaumont et al.: in "
         "some runs)");
+  s.add("genome.projectile_density_mutation", g.projectile_density_mutation,
+        "catapults, with genome.projectile_mutation: mutation may change the projectile's "
+        "density too (not in Chaumont et al., who mutate 'the size and shape')");
+  s.add("genome.projectile_min_side", g.projectile_min_side,
+        "catapults: the least side of a projectile, m (its own range, not the parts')")
+      .require([&g] { return g.projectile_min_side > 0; }, "must be positive");
+  s.add("genome.projectile_max_side", g.projectile_max_side,
+        "catapults: the greatest side of a projectile, m")
+      .require([&g] { return g.projectile_max_side >= g.projectile_min_side; },
+               "must be at least genome.projectile_min_side");
   s.add("genome.projectile_side", g.projectile_side,
         "catapults: side of a random genome's cubic projectile, m")
       .require(
           [&g] {
-            return g.projectile_side >= g.min_part_size && g.projectile_side <= g.max_part_size;
+            return g.projectile_side >= g.projectile_min_side &&
+                   g.projectile_side <= g.projectile_max_side;
           },
-          "must lie within genome.min_part_size and genome.max_part_size");
+          "must lie within genome.projectile_min_side and genome.projectile_max_side");
   s.add("genome.projectile_density", g.projectile_density,
         "catapults: density of a random genome's projectile, kg/m^3")
       .require(

@@ -112,15 +112,17 @@ class Perturber {
     number(j.offset, -kControllerOffsetBound, kControllerOffsetBound);
   }
 
-  // a catapult's projectile: where the arm holds it and the release wire always; its block only
-  // with genome.projectile_mutation (the mechanism itself is not in the genome)
+  // a catapult's projectile: where the arm holds it and the release wire always; its size and
+  // shape only with genome.projectile_mutation, its density only with
+  // projectile_density_mutation too (the mechanism itself is not in the genome)
   void projectile(ProjectileGene& p) {
     vec3(p.position, -kPositionBound, kPositionBound);
     input(p.trigger);
     if (!limits_.projectile_mutation)
       return;
-    vec3(p.dimensions, limits_.min_part_size, limits_.max_part_size);
-    number(p.density, limits_.min_density, limits_.max_density);
+    vec3(p.dimensions, limits_.projectile_min_side, limits_.projectile_max_side);
+    if (limits_.projectile_density_mutation)
+      number(p.density, limits_.min_density, limits_.max_density);
   }
 
  private:

@@ -127,9 +127,10 @@ ProjectileGene randomProjectileGene(const GenomeLimits& limits, Rng& rng) {
   if (limits.projectile_mutation) {
     for (int k = 0; k < 3; ++k) {
       projectile.dimensions[k] =
-          uniformWithin(rng, 0.08, 0.45, limits.min_part_size, limits.max_part_size);
+          uniformWithin(rng, 0.08, 0.45, limits.projectile_min_side, limits.projectile_max_side);
     }
-    projectile.density = uniformWithin(rng, 500, 1500, limits.min_density, limits.max_density);
+    if (limits.projectile_density_mutation)
+      projectile.density = uniformWithin(rng, 500, 1500, limits.min_density, limits.max_density);
   }
   for (int k = 0; k < 3; ++k)
     projectile.position[k] = rng.uniform(-kPositionBound, kPositionBound);

@@ -24,7 +24,8 @@ ConnectionGene randomConnectionGene(std::uint16_t from, std::uint16_t to,
 
 /// A catapult's projectile (GenomeLimits::catapult): held anywhere on the arm, with a random
 /// release wire; a cube of limits.projectile_side and projectile_density, or with
-/// projectile_mutation a random block like a part's.
+/// projectile_mutation a random block within the projectile's size range (and a random density
+/// with projectile_density_mutation).
 ProjectileGene randomProjectileGene(const GenomeLimits& limits, Rng& rng);
 
 }  // namespace cambrian::graph

@@ -174,8 +174,8 @@ void validateGenome(const Genome& genome, const GenomeLimits& limits) {
     static constexpr const char* kAxes[] = {"x", "y", "z"};
     for (int k = 0; k < 3; ++k) {
       checkRange("projectile", std::string("size.") + kAxes[k], p.dimensions[k],
-                 limits.min_part_size, "genome.min_part_size", limits.max_part_size,
-                 "genome.max_part_size");
+                 limits.projectile_min_side, "genome.projectile_min_side",
+                 limits.projectile_max_side, "genome.projectile_max_side");
       checkFixedRange("projectile", std::string("position.") + kAxes[k], p.position[k],
                       -kPositionBound, kPositionBound);
     }

@@ -267,6 +267,39 @@ TEST(Operators, KeepOneArmAndOneProjectile) {
   EXPECT_GT(resized_free, 150);
 }
 
+// a mutable projectile keeps to its own size range, whatever the parts' range, and keeps its
+// density unless projectile_density_mutation lets that change too
+TEST(Operators, AProjectileMutatesWithinItsOwnRange) {
+  GenomeLimits limits = catapultLimits(true);
+  limits.projectile_min_side = 0.1;
+  limits.projectile_max_side = 0.3;
+  MutationSettings settings;
+  settings.parameter_rate = 1;
+  settings.perturbation = 10;
+  int reached_max = 0, reached_min = 0, density_changed = 0, density_free = 0;
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    Genome g = randomGenome(limits, 21, 0, i);
+    const double density = g.projectile->density;
+    Rng rng(22, RngPurpose::variation, 0, i);
+    for (int step = 0; step < 5; ++step) {
+      g = mutate(g, limits, settings, rng);
+      ASSERT_NO_THROW(validateGenome(g, limits));
+    }
+    for (int k = 0; k < 3; ++k) {
+      reached_max += g.projectile->dimensions[k] > 0.29 ? 1 : 0;
+      reached_min += g.projectile->dimensions[k] < 0.11 ? 1 : 0;
+    }
+    density_changed += g.projectile->density != density ? 1 : 0;
+    GenomeLimits dense = limits;
+    dense.projectile_density_mutation = true;
+    density_free += mutate(g, dense, settings, rng).projectile->density != density ? 1 : 0;
+  }
+  EXPECT_GT(reached_max, 20);
+  EXPECT_GT(reached_min, 20);
+  EXPECT_EQ(density_changed, 0);
+  EXPECT_GT(density_free, 150);
+}
+
 // grafting into the root brings the second parent's root along every time; into any node, a
 // graft below it leaves that root behind (dropped, unreachable) about two times in three
 TEST(Operators, GraftIntoAnyNode) {

@@ -203,6 +203,15 @@ TEST(Validate, AProjectileExactlyInCatapults) {
   catapult.projectile->dimensions.y = 9;
   EXPECT_NE(message(catapult, catapultLimits()).find("projectile"), std::string::npos);
   EXPECT_NE(message(catapult, catapultLimits()).find("size.y"), std::string::npos);
+  // the projectile's own size range, not the parts'
+  catapult.projectile->dimensions.y = 0.5;
+  GenomeLimits small = catapultLimits();
+  small.projectile_max_side = 0.4;
+  EXPECT_NE(message(catapult, small).find("genome.projectile_max_side"), std::string::npos);
+  catapult.projectile->dimensions.y = 1.6;  // above genome.max_part_size, 1.5
+  GenomeLimits large = catapultLimits();
+  large.projectile_max_side = 2;
+  EXPECT_NO_THROW(validateGenome(catapult, large));
 }
 }  // namespace
 }  // namespace cambrian::graph
