@@ -170,11 +170,11 @@ struct GenomeLimits {
   bool projectile_mutation = false;
   /// With projectile_mutation, mutation may change its density too (not in Chaumont et al.).
   bool projectile_density_mutation = false;
-  double projectile_side = 0.2;      ///< m, the side of a random genome's cubic projectile
-  double projectile_density = 1000;  ///< kg / m^3, a random genome's projectile
+  double projectile_side = 0.2;       ///< m, the side of a random genome's cubic projectile
+  double projectile_density = 1000;   ///< kg / m^3, a random genome's projectile
   double projectile_min_side = 0.05;  ///< m, any side of a projectile, its own range
   double projectile_max_side = 1.5;   ///< m
-  int release_delay = 30;            ///< controller steps until the projectile is let go at last
+  int release_delay = 30;             ///< controller steps until the projectile is let go at last
 };
 
 //---------------------------------------------------------------- operations

@@ -82,11 +82,12 @@ void fitConnection(ConnectionGene& c, const GenomeLimits& limits) {
   j.offset = clampToRange(j.offset, -kControllerOffsetBound, kControllerOffsetBound);
 }
 
-// a catapult's projectile within its own size range and the density range; position within the connection bounds
+// a catapult's projectile within its own size range and the density range; position within the
+// connection bounds
 void fitProjectile(ProjectileGene& projectile, const GenomeLimits& limits) {
   for (int k = 0; k < 3; ++k) {
-    projectile.dimensions[k] =
-        clampToRange(projectile.dimensions[k], limits.projectile_min_side, limits.projectile_max_side);
+    projectile.dimensions[k] = clampToRange(projectile.dimensions[k], limits.projectile_min_side,
+                                            limits.projectile_max_side);
     projectile.position[k] = clampToRange(projectile.position[k], -kPositionBound, kPositionBound);
   }
   projectile.density = clampToRange(projectile.density, limits.min_density, limits.max_density);
