@@ -63,6 +63,15 @@ def load_trajectory(path):
             }
             data["half_extents"] = np.asarray(file["part/half_extents"][()])
             data["parent"] = np.asarray(file["part/parent"][()])
+            # objects held at birth (a catapult's projectile): /held, absent when there are none
+            held = file["held"] if "held" in file else None
+            data["held_half_extents"] = np.asarray(held["half_extents"][()]) if held else np.zeros((0, 3))
+            frames = len(data["time"])
+            for name, width in (("position", 3), ("orientation", 4)):
+                data["held_" + name] = (
+                    np.asarray(held[name][()]) if held else np.zeros((frames, 0, width))
+                )
+            data["held_released"] = np.asarray(held["released"][()]) if held else np.zeros((frames, 0))
     except OSError as error:
         raise TrajectoryError(f"{path}: not a readable HDF5 file ({error})") from error
     except KeyError as error:
@@ -70,6 +79,9 @@ def load_trajectory(path):
     frames, parts = len(data["time"]), len(data["half_extents"])
     if data["position"].shape != (frames, parts, 3) or data["orientation"].shape != (frames, parts, 4):
         raise TrajectoryError(f"{path}: /position or /orientation does not match {frames} frames x {parts} parts")
+    held = len(data["held_half_extents"])
+    if data["held_position"].shape != (frames, held, 3) or data["held_orientation"].shape != (frames, held, 4):
+        raise TrajectoryError(f"{path}: /held/position or /held/orientation does not match {frames} frames x {held} objects")
     data["attributes"] = {
         key: (value.decode() if isinstance(value, bytes) else value) for key, value in attributes.items()
     }
@@ -194,6 +206,9 @@ def render(trajectory, output, fps=None, size=(640, 480), stride=1, max_frames=N
     axes.add_collection3d(grid)
     (trail,) = axes.plot([], [], [], color="0.35", linewidth=1.0, zorder=2)
     axes.add_collection3d(boxes)
+    # held objects (a catapult's projectile) in one colour, drawn over the body
+    held = Poly3DCollection([], facecolors="tab:red", edgecolors="k", linewidths=0.4, alpha=0.95, zorder=4)
+    axes.add_collection3d(held)
     radius = view_radius(trajectory)
     spacing = grid_spacing(radius)
     com = trajectory["center_of_mass"]
@@ -204,6 +219,14 @@ def render(trajectory, output, fps=None, size=(640, 480), stride=1, max_frames=N
         boxes.set_verts(
             box_faces(trajectory["half_extents"], trajectory["position"][index], trajectory["orientation"][index])
         )
+        if len(trajectory["held_half_extents"]):
+            held.set_verts(
+                box_faces(
+                    trajectory["held_half_extents"],
+                    trajectory["held_position"][index],
+                    trajectory["held_orientation"][index],
+                )
+            )
         cx, cy = com[index, 0], com[index, 1]
         grid.set_segments(ground_segments((cx, cy), radius, spacing))
         path = com[indices[: k + 1]]
@@ -214,7 +237,7 @@ def render(trajectory, output, fps=None, size=(640, 480), stride=1, max_frames=N
         axes.set_zlim(0, radius)
         axes.set_box_aspect((1, 1, 0.5), zoom=1.4)
         axes.set_title(frame_title(trajectory, index), fontsize=9)
-        return boxes, grid, trail
+        return boxes, held, grid, trail
 
     writer = animation.PillowWriter(fps=fps) if suffix == ".gif" else animation.FFMpegWriter(fps=fps)
     movie = animation.FuncAnimation(figure, draw, frames=len(indices), blit=False)

@@ -18,8 +18,9 @@ import animate  # noqa: E402
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "animate.py")
 
 
-def write_trajectory(path, frames=12, parts=2, format_name="cambrian-trajectory"):
-    """A small trajectory in the traj.h5 layout: two boxes sliding along x."""
+def write_trajectory(path, frames=12, parts=2, format_name="cambrian-trajectory", held=0):
+    """A small trajectory in the traj.h5 layout: two boxes sliding along x, and `held` objects
+    (a catapult's projectile) beside them."""
     time = np.arange(frames) / 30.0
     with h5py.File(path, "w") as file:
         file.attrs["format"] = format_name
@@ -46,7 +47,38 @@ def write_trajectory(path, frames=12, parts=2, format_name="cambrian-trajectory"
         file["center_of_mass"] = position.mean(axis=1)
         file["part/half_extents"] = np.full((parts, 3), 0.1)
         file["part/parent"] = np.arange(parts, dtype=np.int32) - 1
+        if held:
+            held_position = position[:, :held, :].copy()
+            held_position[:, :, 1] += 0.3
+            file["held/half_extents"] = np.full((held, 3), 0.1)
+            file["held/part"] = np.zeros(held, dtype=np.int32)
+            file["held/position"] = held_position
+            file["held/orientation"] = orientation[:, :held, :]
+            file["held/released"] = (np.arange(frames)[:, None] >= frames // 2).astype(np.uint8) * np.ones(
+                (1, held), dtype=np.uint8
+            )
     return path
+
+
+def red_pixels(path):
+    """Pixels of the first frame of a GIF near matplotlib's tab:red, the held objects' colour."""
+    with Image.open(path) as image:
+        pixels = np.asarray(image.convert("RGB"), dtype=int)
+    return int(np.sum(np.abs(pixels - np.array([214, 39, 40])).sum(axis=2) < 60))
+
+
+def test_held_objects_are_read_and_drawn(tmp_path):
+    plain = animate.load_trajectory(write_trajectory(str(tmp_path / "plain.h5")))
+    assert plain["held_half_extents"].shape == (0, 3)
+    thrown = write_trajectory(str(tmp_path / "thrown.h5"), held=1)
+    trajectory = animate.load_trajectory(thrown)
+    assert trajectory["held_position"].shape == (12, 1, 3)
+    assert list(trajectory["held_released"][:, 0]) == [0] * 6 + [1] * 6
+    for name in ("plain", "thrown"):
+        arguments = [str(tmp_path / f"{name}.h5"), "-o", str(tmp_path / f"{name}.gif")]
+        assert animate.main(arguments + ["--size", "160x120", "--max-frames", "2"]) == 0
+    assert red_pixels(str(tmp_path / "plain.gif")) == 0
+    assert red_pixels(str(tmp_path / "thrown.gif")) > 20
 
 
 def test_rotation_matrices_match_known_turns():

@@ -100,6 +100,10 @@ struct EvalFrame {
   EvalPhase phase = EvalPhase::settle;  ///< phase of the step that led here (settle at birth)
   Vec3 center_of_mass;                  ///< mass-weighted centre of the parts, world frame, m
   std::span<const Transform> poses;     ///< world pose of every part, BodyPlan order
+  /// World pose of every held object (BodyPlan::held order: a catapult's projectile), held or
+  /// let go; empty for most creatures.
+  std::span<const Transform> held_poses;
+  std::span<const std::uint8_t> held_released;  ///< per held object: 1 once it has been let go
 };
 
 /// Watches an evaluation, e.g. to record a trajectory for rendering. It only reads: an

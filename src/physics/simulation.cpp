@@ -203,4 +203,14 @@ void Simulation::partPoses(std::vector<Transform>& poses) const {
     poses[i] = world_->partPose(static_cast<int>(i));
 }
 
+void Simulation::heldPoses(std::vector<Transform>& poses,
+                           std::vector<std::uint8_t>& released) const {
+  poses.resize(plan_.held.size());
+  released.resize(plan_.held.size());
+  for (std::size_t i = 0; i < plan_.held.size(); ++i) {
+    poses[i] = world_->heldPose(static_cast<int>(i));
+    released[i] = world_->released(static_cast<int>(i)) ? 1 : 0;
+  }
+}
+
 }  // namespace cambrian

@@ -53,6 +53,8 @@ class Simulation {
   double lowestPoint() const;
   /// World pose of every part (BodyPlan order).
   void partPoses(std::vector<Transform>& poses) const;
+  /// World pose of every held object (BodyPlan::held order) and whether each has been let go.
+  void heldPoses(std::vector<Transform>& poses, std::vector<std::uint8_t>& released) const;
   /// The body plan.
   const BodyPlan& plan() const { return plan_; }
   /// The world (for tasks that read the environment's objects).

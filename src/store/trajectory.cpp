@@ -51,6 +51,30 @@ bool readDataset(hid_t location, const char* name, std::vector<T>& values,
   return readValues(dataset.get(), count, values);
 }
 
+// poses as (x, y, z) positions and (x, y, z, w) quaternions, appended
+void flattenPoses(const std::vector<Transform>& poses, std::vector<double>& position,
+                  std::vector<double>& orientation) {
+  for (const Transform& pose : poses) {
+    position.insert(position.end(), {pose.position.x, pose.position.y, pose.position.z});
+    orientation.insert(orientation.end(),
+                       {pose.rotation.x, pose.rotation.y, pose.rotation.z, pose.rotation.w});
+  }
+}
+
+// poses back from flattenPoses' arrays (`count` of them)
+std::vector<Transform> unflattenPoses(const std::vector<double>& position,
+                                      const std::vector<double>& orientation, hsize_t count) {
+  std::vector<Transform> poses;
+  for (hsize_t k = 0; k < count; ++k) {
+    Transform pose;
+    pose.position = {position[3 * k], position[3 * k + 1], position[3 * k + 2]};
+    pose.rotation = {orientation[4 * k + 3], orientation[4 * k], orientation[4 * k + 1],
+                     orientation[4 * k + 2]};
+    poses.push_back(pose);
+  }
+  return poses;
+}
+
 // flushes a closed file's data to the disk (best effort: a failure shows up at rename)
 void syncFile(const std::string& path) {
   int fd = ::open(path.c_str(), O_RDONLY);
@@ -84,11 +108,7 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
   std::vector<double> com, position, orientation;
   for (const Vec3& c : t.center_of_mass)
     com.insert(com.end(), {c.x, c.y, c.z});
-  for (const Transform& pose : t.poses) {
-    position.insert(position.end(), {pose.position.x, pose.position.y, pose.position.z});
-    orientation.insert(orientation.end(),
-                       {pose.rotation.x, pose.rotation.y, pose.rotation.z, pose.rotation.w});
-  }
+  flattenPoses(t.poses, position, orientation);
   what = "the frame datasets";
   ok =
       writeDescribed(file, "time", {frames}, H5T_NATIVE_DOUBLE, t.time.data(), "s",
@@ -121,10 +141,40 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
   for (const Vec3& h : t.half_extents)
     half.insert(half.end(), {h.x, h.y, h.z});
   std::vector<std::int32_t> parents(t.parent.begin(), t.parent.end());
-  return writeDescribed(group.get(), "half_extents", {parts, 3}, H5T_NATIVE_DOUBLE, half.data(),
-                        "m", "half the box size along the part's own x, y, z axes") &&
-         writeDescribed(group.get(), "parent", {parts}, H5T_NATIVE_INT32, parents.data(), "1",
-                        "index of the parent part; -1 for the root");
+  ok = writeDescribed(group.get(), "half_extents", {parts, 3}, H5T_NATIVE_DOUBLE, half.data(), "m",
+                      "half the box size along the part's own x, y, z axes") &&
+       writeDescribed(group.get(), "parent", {parts}, H5T_NATIVE_INT32, parents.data(), "1",
+                      "index of the parent part; -1 for the root");
+  if (!ok || t.heldCount() == 0)
+    return ok;
+
+  // the held objects (a catapult's projectile), only when there are any
+  what = "the /held group";
+  const hsize_t held = t.heldCount();
+  Handle held_group(H5Gcreate2(file, "held", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!held_group.valid() ||
+      !writeString(held_group.get(), "description",
+                   "objects the creature holds at birth (a catapult's projectile), BodyPlan "
+                   "order; held until released, then free"))
+    return false;
+  std::vector<double> held_half, held_position, held_orientation;
+  for (const Vec3& h : t.held_half_extents)
+    held_half.insert(held_half.end(), {h.x, h.y, h.z});
+  std::vector<std::int32_t> holders(t.held_part.begin(), t.held_part.end());
+  flattenPoses(t.held_poses, held_position, held_orientation);
+  hid_t g = held_group.get();
+  return writeDescribed(g, "half_extents", {held, 3}, H5T_NATIVE_DOUBLE, held_half.data(), "m",
+                        "half the box size along the object's own x, y, z axes") &&
+         writeDescribed(g, "part", {held}, H5T_NATIVE_INT32, holders.data(), "1",
+                        "index of the part that holds it at birth") &&
+         writeDescribed(g, "position", {frames, held, 3}, H5T_NATIVE_DOUBLE, held_position.data(),
+                        "m",
+                        "world position of each object's centre, frame x object x (x, y, z)") &&
+         writeDescribed(g, "orientation", {frames, held, 4}, H5T_NATIVE_DOUBLE,
+                        held_orientation.data(), "1",
+                        "world orientation of each object, unit quaternion (x, y, z, w)") &&
+         writeDescribed(g, "released", {frames, held}, H5T_NATIVE_UINT8, t.held_released.data(),
+                        "1", "1 once the object has been let go");
 }
 
 }  // namespace
@@ -144,6 +194,10 @@ void TrajectoryRecorder::begin(const BodyPlan& plan, double time_step) {
     fresh.half_extents.push_back(part.size * 0.5);
     fresh.parent.push_back(part.parent);
   }
+  for (const HeldObject& held : plan.held) {
+    fresh.held_half_extents.push_back(held.size * 0.5);
+    fresh.held_part.push_back(held.part);
+  }
   trajectory_ = std::move(fresh);
 }
 
@@ -153,6 +207,10 @@ void TrajectoryRecorder::frame(const EvalFrame& frame) {
   trajectory_.phase.push_back(frame.phase);
   trajectory_.center_of_mass.push_back(frame.center_of_mass);
   trajectory_.poses.insert(trajectory_.poses.end(), frame.poses.begin(), frame.poses.end());
+  trajectory_.held_poses.insert(trajectory_.held_poses.end(), frame.held_poses.begin(),
+                                frame.held_poses.end());
+  trajectory_.held_released.insert(trajectory_.held_released.end(), frame.held_released.begin(),
+                                   frame.held_released.end());
 }
 
 std::uint64_t frameStrideFor(double frame_rate, double time_step) {
@@ -175,7 +233,9 @@ void writeTrajectory(const std::string& path, const Trajectory& t) {
   // the arrays must agree before anything touches the disk
   const std::size_t frames = t.frameCount(), parts = t.partCount();
   if (t.parent.size() != parts || t.step.size() != frames || t.phase.size() != frames ||
-      t.center_of_mass.size() != frames || t.poses.size() != frames * parts) {
+      t.center_of_mass.size() != frames || t.poses.size() != frames * parts ||
+      t.held_part.size() != t.heldCount() || t.held_poses.size() != frames * t.heldCount() ||
+      t.held_released.size() != frames * t.heldCount()) {
     throw Error(ExitCode::failure, path + ": inconsistent trajectory (" + std::to_string(frames) +
                                        " frames, " + std::to_string(parts) + " parts, " +
                                        std::to_string(t.poses.size()) + " poses)");
@@ -285,13 +345,33 @@ Trajectory readTrajectory(const std::string& path) {
     t.phase.push_back(static_cast<EvalPhase>(phases[i]));
     t.center_of_mass.push_back({com[3 * i], com[3 * i + 1], com[3 * i + 2]});
   }
-  for (hsize_t k = 0; k < frames * parts; ++k) {
-    Transform pose;
-    pose.position = {position[3 * k], position[3 * k + 1], position[3 * k + 2]};
-    pose.rotation = {orientation[4 * k + 3], orientation[4 * k], orientation[4 * k + 1],
-                     orientation[4 * k + 2]};
-    t.poses.push_back(pose);
+  t.poses = unflattenPoses(position, orientation, frames * parts);
+
+  // the held objects, when the file has any (files without /held hold none)
+  if (H5Lexists(f, "held", H5P_DEFAULT) <= 0)
+    return t;
+  std::vector<std::int32_t> holders;
+  need(readDataset(f, "held/half_extents", half, dims), "held/half_extents");
+  const hsize_t held = dims.size() == 2 ? dims[0] : 0;
+  auto held_shape = [&](const char* name, std::vector<hsize_t> wanted) {
+    if (dims != wanted)
+      fail(std::string("dataset /") + name + " has the wrong shape for " + std::to_string(frames) +
+           " frames and " + std::to_string(held) + " held objects");
+  };
+  held_shape("held/half_extents", {held, 3});
+  need(readDataset(f, "held/part", holders, dims), "held/part");
+  held_shape("held/part", {held});
+  need(readDataset(f, "held/position", position, dims), "held/position");
+  held_shape("held/position", {frames, held, 3});
+  need(readDataset(f, "held/orientation", orientation, dims), "held/orientation");
+  held_shape("held/orientation", {frames, held, 4});
+  need(readDataset(f, "held/released", t.held_released, dims), "held/released");
+  held_shape("held/released", {frames, held});
+  for (hsize_t k = 0; k < held; ++k) {
+    t.held_half_extents.push_back({half[3 * k], half[3 * k + 1], half[3 * k + 2]});
+    t.held_part.push_back(holders[k]);
   }
+  t.held_poses = unflattenPoses(position, orientation, frames * held);
   return t;
 }
 

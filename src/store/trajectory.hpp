@@ -23,7 +23,7 @@ constexpr const char* kTrajectoryFormatName = "cambrian-trajectory";
 constexpr std::uint64_t kNoCreatureId = std::numeric_limits<std::uint64_t>::max();
 
 /// Everything a trajectory file holds. Frames are in time order; per-frame part data is
-/// frame-major: entry `frame * partCount() + part`.
+/// frame-major: entry `frame * partCount() + part` (held objects: `frame * heldCount() + k`).
 struct Trajectory {
   // provenance and outcome (root attributes)
   std::uint64_t creature_id = kNoCreatureId;  ///< id in the source history, or kNoCreatureId
@@ -47,8 +47,16 @@ struct Trajectory {
   std::vector<Vec3> center_of_mass;  ///< per frame, world frame, m
   std::vector<Transform> poses;      ///< frames x parts world poses (frame-major)
 
+  // objects held at birth (BodyPlan::held order: a catapult's projectile); none for most
+  std::vector<Vec3> held_half_extents;      ///< half the box size along its own axes, m
+  std::vector<int> held_part;               ///< the part that holds it at birth
+  std::vector<Transform> held_poses;        ///< frames x held world poses (frame-major)
+  std::vector<std::uint8_t> held_released;  ///< frames x held: 1 once it has been let go
+
   /// Number of parts.
   std::size_t partCount() const { return half_extents.size(); }
+  /// Number of held objects.
+  std::size_t heldCount() const { return held_half_extents.size(); }
   /// Number of frames.
   std::size_t frameCount() const { return time.size(); }
 };
@@ -61,7 +69,7 @@ class TrajectoryRecorder : public FrameObserver {
   explicit TrajectoryRecorder(std::uint64_t stride);
   /// The stride given at construction.
   std::uint64_t frameStride() const override { return stride_; }
-  /// Takes the part sizes and parents from `plan`; forgets any earlier recording.
+  /// Takes the part and held-object sizes from `plan`; forgets any earlier recording.
   void begin(const BodyPlan& plan, double time_step) override;
   /// Appends one frame.
   void frame(const EvalFrame& frame) override;

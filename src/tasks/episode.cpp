@@ -87,12 +87,15 @@ void Episode::restart() {
 
 void Episode::show(EvalPhase phase) {
   simulation_->partPoses(poses_);
+  simulation_->heldPoses(held_poses_, held_released_);
   EvalFrame frame;
   frame.step = totalSteps();
   frame.time = static_cast<double>(frame.step) * simulation_->timeStep();
   frame.phase = phase;
   frame.center_of_mass = simulation_->centerOfMass();
   frame.poses = poses_;
+  frame.held_poses = held_poses_;
+  frame.held_released = held_released_;
   observer_->frame(frame);
 }
 

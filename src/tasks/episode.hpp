@@ -96,7 +96,9 @@ class Episode {
   Clock::time_point deadline_;
   FrameObserver* observer_ = nullptr;
   std::uint64_t stride_ = 1;
-  std::vector<Transform> poses_;  // the observer's and the rest check's pose buffer
+  std::vector<Transform> poses_;       // the observer's and the rest check's pose buffer
+  std::vector<Transform> held_poses_;  // the observer's held objects
+  std::vector<std::uint8_t> held_released_;
 };
 
 }  // namespace cambrian

@@ -78,6 +78,30 @@ void expectSame(const Trajectory& a, const Trajectory& b) {
     EXPECT_EQ(a.poses[i].position, b.poses[i].position) << "pose " << i;
     EXPECT_EQ(a.poses[i].rotation, b.poses[i].rotation) << "pose " << i;
   }
+  EXPECT_EQ(a.held_half_extents, b.held_half_extents);
+  EXPECT_EQ(a.held_part, b.held_part);
+  EXPECT_EQ(a.held_released, b.held_released);
+  ASSERT_EQ(a.held_poses.size(), b.held_poses.size());
+  for (std::size_t i = 0; i < a.held_poses.size(); ++i) {
+    EXPECT_EQ(a.held_poses[i].position, b.held_poses[i].position) << "held pose " << i;
+    EXPECT_EQ(a.held_poses[i].rotation, b.held_poses[i].rotation) << "held pose " << i;
+  }
+}
+
+// makeTrajectory with a projectile held by part 0 and let go after frame 2
+Trajectory makeThrowTrajectory() {
+  Trajectory t = makeTrajectory();
+  t.task = "catapult";
+  t.held_half_extents = {{0.1, 0.1, 0.05}};
+  t.held_part = {0};
+  for (std::size_t f = 0; f < t.frameCount(); ++f) {
+    Transform pose;
+    pose.position = {1.5 * static_cast<double>(f), 0.25, 1.0 - 0.1 * static_cast<double>(f)};
+    pose.rotation = {0.6, 0.0, 0.8, 0.01 * static_cast<double>(f)};
+    t.held_poses.push_back(pose);
+    t.held_released.push_back(f > 2 ? 1 : 0);
+  }
+  return t;
 }
 
 // the exit code of what `action` throws, or -1
@@ -101,6 +125,25 @@ TEST(Trajectory, RoundTrip) {
     EXPECT_EQ(entry.path().filename().string().find("cambrian_trajectory_test_round_trip.h5.tmp"),
               std::string::npos);
   }
+}
+
+// a trajectory with a held object keeps it, bit for bit; one without writes no /held group and
+// reads back none
+TEST(Trajectory, HeldObjectsRoundTrip) {
+  std::string path = tempPath("held.h5");
+  Trajectory written = makeThrowTrajectory();
+  writeTrajectory(path, written);
+  Trajectory read = readTrajectory(path);
+  EXPECT_EQ(read.heldCount(), 1u);
+  expectSame(read, written);
+  writeTrajectory(path, makeTrajectory());
+  EXPECT_EQ(readTrajectory(path).heldCount(), 0u);
+  // a held pose missing is refused before anything is written
+  Trajectory broken = makeThrowTrajectory();
+  broken.held_poses.pop_back();
+  EXPECT_EQ(thrownCode([&] { writeTrajectory(path, broken); }),
+            static_cast<int>(ExitCode::failure));
+  EXPECT_EQ(readTrajectory(path).heldCount(), 0u);
 }
 
 // writing over an existing file replaces it whole
@@ -268,6 +311,46 @@ TEST(TrajectoryRecorder, InvalidCreatureRecordsNothing) {
   EXPECT_EQ(outcome.status, EvalStatus::invalid_body);
   EXPECT_EQ(recorder.trajectory().partCount(), 0u);
   EXPECT_EQ(recorder.trajectory().frameCount(), 0u);
+}
+
+// a catapult's projectile is recorded beside the body: held on the +x face of the 1 m slab
+// (0.55 m from its centre) until the mechanism lets go at controller step 30, then free; it ends
+// resting on the ground
+TEST(TrajectoryRecorder, AHeldProjectileIsRecorded) {
+  CreatureSettings settings;
+  settings.set("task.name", "catapult");
+  settings.set("task.evaluation_time", "3");
+  settings.set("genome.catapult", "true");
+  settings.set("physics.time_step", "0.016666666666666667");
+  settings.set("physics.substeps", "4");
+  settings.check();
+  const Genotype genome = settings.encoding().fromText(
+      "cambrian-genome 2\nnode 0 size 1 1 0.2 density 1000 joint rigid limit 1 1 1 recursion 1\n"
+      "projectile size 0.1 0.1 0.1 density 1000 position 1 0 0 trigger constant 0 0 0\nend\n",
+      "test");
+  TrajectoryRecorder recorder(1);
+  const Outcome outcome = evaluate(genome, settings, 0, &recorder);
+  ASSERT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
+  const Trajectory& t = recorder.trajectory();
+  ASSERT_EQ(t.heldCount(), 1u);
+  EXPECT_EQ(t.held_half_extents[0], (Vec3{0.05, 0.05, 0.05}));
+  EXPECT_EQ(t.held_part[0], 0);
+  ASSERT_EQ(t.held_poses.size(), t.frameCount());
+  ASSERT_EQ(t.held_released.size(), t.frameCount());
+  std::size_t first_free = t.frameCount();
+  for (std::size_t f = 0; f < t.frameCount(); ++f) {
+    if (t.held_released[f] && first_free == t.frameCount())
+      first_free = f;
+    if (f > first_free)
+      EXPECT_EQ(t.held_released[f], 1) << "frame " << f;  // once let go, never held again
+    if (!t.held_released[f]) {
+      const Vec3 offset = t.held_poses[f].position - t.poses[f].position;
+      EXPECT_NEAR(norm(offset), 0.55, 1e-3) << "frame " << f;
+    }
+  }
+  ASSERT_LT(first_free, t.frameCount());
+  EXPECT_EQ(t.phase[first_free], EvalPhase::measure);
+  EXPECT_NEAR(t.held_poses.back().position.z, 0.05, 5e-3);
 }
 
 }  // namespace
