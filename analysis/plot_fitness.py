@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """Plot fitness over generations from a cambrian history file: best, mean, median and the
-interquartile band (q25..q75), written to a PNG (headless, matplotlib's Agg backend).
+interquartile band (q25..q75), written to a PNG (headless, matplotlib's Agg backend). Given
+several histories (runs of one experiment at several seeds, say), it draws each run's best
+(solid) and median (dashed) in one colour per run, labelled by seed, to show the spread.
 
     python3 analysis/plot_fitness.py run/history.h5 --output fitness.png
+    python3 analysis/plot_fitness.py seed1/history.h5 seed2/history.h5 --output seeds.png
 """
 
 import argparse
@@ -23,9 +26,14 @@ def parse_arguments(argv):
         description="Plot best / mean / median fitness and the q25..q75 band over generations "
         "from a cambrian history.h5 (works while the run is still writing it)."
     )
-    parser.add_argument("history", help="history.h5 written by `cambrian evolve`")
+    parser.add_argument(
+        "history", nargs="+", help="history.h5 written by `cambrian evolve`; several: one line pair per run"
+    )
     parser.add_argument("-o", "--output", default="fitness.png", help="PNG to write (default: fitness.png)")
     parser.add_argument("--title", default=None, help="plot title (default: the file and seed)")
+    parser.add_argument(
+        "--log", action="store_true", help="logarithmic fitness axis (runs that differ by orders of magnitude)"
+    )
     parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNG (default: 120)")
     return parser.parse_args(argv)
 
@@ -48,20 +56,60 @@ def plot(generations, title, output, dpi=120):
     plt.close(figure)
 
 
+def plot_runs(runs, title, output, dpi=120, log=False):
+    """Draws each run's best (solid) and median (dashed) in a colour of its own; `runs` is a list
+    of (label, generations table)."""
+    figure, axes = plt.subplots(figsize=(8, 4.5))
+    colours = plt.get_cmap("tab10")
+    for k, (label, generations) in enumerate(runs):
+        g = generations["generation"]
+        colour = colours(k % 10)
+        axes.plot(g, generations["best"], color=colour, linewidth=2, label=f"{label}: best")
+        axes.plot(g, generations["median"], color=colour, linestyle="--", label=f"{label}: median")
+    axes.set_xlabel("generation")
+    axes.set_ylabel("fitness")
+    if log:
+        axes.set_yscale("symlog", linthresh=1.0)
+    axes.set_title(title)
+    axes.grid(alpha=0.3)
+    axes.legend(loc="best", fontsize=8)
+    figure.tight_layout()
+    figure.savefig(output, dpi=dpi)
+    plt.close(figure)
+
+
+def run_label(path, seed, seeds):
+    """A run's label: its seed, or its directory where two runs share a seed."""
+    if seed is not None and seeds.count(seed) == 1:
+        return f"seed {seed}"
+    return os.path.basename(os.path.dirname(os.path.abspath(path))) or path
+
+
 def main(argv=None):
     arguments = parse_arguments(sys.argv[1:] if argv is None else argv)
-    try:
-        with cambrian_history.History(arguments.history) as history:
-            generations = history.generations()
-            seed = history.attributes.get("seed")
-    except cambrian_history.HistoryError as error:
-        print(f"plot_fitness: error: {error}", file=sys.stderr)
-        return 4
-    if len(generations["generation"]) == 0:
-        print(f"plot_fitness: error: {arguments.history}: no generations yet", file=sys.stderr)
-        return 4
-    title = arguments.title or f"{arguments.history} (seed {seed})"
-    plot(generations, title, arguments.output, arguments.dpi)
+    tables, seeds = [], []
+    for path in arguments.history:
+        try:
+            with cambrian_history.History(path) as history:
+                generations = history.generations()
+                seed = history.attributes.get("seed")
+        except cambrian_history.HistoryError as error:
+            print(f"plot_fitness: error: {error}", file=sys.stderr)
+            return 4
+        if len(generations["generation"]) == 0:
+            print(f"plot_fitness: error: {path}: no generations yet", file=sys.stderr)
+            return 4
+        tables.append(generations)
+        seeds.append(None if seed is None else int(seed))
+    if len(tables) == 1:
+        title = arguments.title or f"{arguments.history[0]} (seed {seeds[0]})"
+        plot(tables[0], title, arguments.output, arguments.dpi)
+        if arguments.log:
+            print("plot_fitness: --log applies to several runs only", file=sys.stderr)
+    else:
+        runs = [(run_label(path, seed, seeds), table) for path, seed, table in zip(arguments.history, seeds, tables)]
+        title = arguments.title or f"{len(runs)} runs"
+        plot_runs(runs, title, arguments.output, arguments.dpi, arguments.log)
     print(f"wrote {arguments.output}")
     return 0
 

@@ -137,6 +137,26 @@ def test_plot_writes_a_png(history_path, tmp_path):
     assert output.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+def test_plot_of_several_runs(history_path, tmp_path):
+    output = tmp_path / "runs.png"
+    result = run_plot(history_path, history_path, "--output", str(output), "--log")
+    assert result.returncode == 0, result.stderr
+    assert output.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # one bad file among them: nothing written, the file named
+    missing = str(tmp_path / "missing.h5")
+    result = run_plot(history_path, missing, "--output", str(tmp_path / "y.png"))
+    assert result.returncode == 4 and "missing.h5" in result.stderr
+    assert not (tmp_path / "y.png").exists()
+
+
+def test_run_labels_are_seeds_unless_shared():
+    sys.path.insert(0, os.path.dirname(HERE))
+    import plot_fitness
+
+    assert plot_fitness.run_label("a/s1/history.h5", 1, [1, 2]) == "seed 1"
+    assert plot_fitness.run_label("a/s1/history.h5", 1, [1, 1]) == "s1"
+
+
 def test_plot_help_and_bad_file(tmp_path):
     result = run_plot("--help")
     assert result.returncode == 0 and "--output" in result.stdout

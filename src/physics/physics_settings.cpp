@@ -34,7 +34,8 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "into jitter and creep")
       .earlierRunsUsed("false");
   s.add("physics.strength_per_area", p.strength_per_area,
-        "joint torque per m^2 of the smaller cross-section, N m/m^2")
+        "joint torque per m^2 of the joint's cross-section (the face genome.strength_section "
+        "names), N m/m^2")
       .require([&p] { return p.strength_per_area >= 0 && std::isfinite(p.strength_per_area); },
                "must be >= 0");
   s.addChoice("physics.actuation", p.actuation,

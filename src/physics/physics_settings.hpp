@@ -35,7 +35,7 @@ struct PhysicsSettings {
   /// of -damping x the velocity before the step, which reverses a light limb's velocity each step
   /// and makes a passive body creep (docs/physics-and-tasks.md, "No motion from nothing").
   bool implicit_damping = true;
-  double strength_per_area = 2000;  ///< N m of torque per m^2 of the smaller cross-section
+  double strength_per_area = 2000;  ///< N m of torque per m^2 of a joint's cross-section
   Actuation actuation = Actuation::saturated_motor;  ///< how commands move the joints
   double motor_speed = 10;                           ///< rad / s, target speed of a saturated motor
   /// Whether a creature's parts collide with each other while it moves, joint neighbours excepted
