@@ -339,10 +339,12 @@ TEST(TrajectoryRecorder, AHeldProjectileIsRecorded) {
   ASSERT_EQ(t.held_released.size(), t.frameCount());
   std::size_t first_free = t.frameCount();
   for (std::size_t f = 0; f < t.frameCount(); ++f) {
-    if (t.held_released[f] && first_free == t.frameCount())
+    if (t.held_released[f] && first_free == t.frameCount()) {
       first_free = f;
-    if (f > first_free)
+    }
+    if (f > first_free) {
       EXPECT_EQ(t.held_released[f], 1) << "frame " << f;  // once let go, never held again
+    }
     if (!t.held_released[f]) {
       const Vec3 offset = t.held_poses[f].position - t.poses[f].position;
       EXPECT_NEAR(norm(offset), 0.55, 1e-3) << "frame " << f;
