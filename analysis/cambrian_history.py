@@ -11,6 +11,8 @@ always consistent.
         inds = h.individuals()           # dict, plus "measure:<name>" columns
         genome = h.genome_bytes(42)      # bytes of individual 42 (serializeGenome)
         print(h.attributes["config_text"])
+        frame = h.individuals_frame()    # pandas DataFrame, measures as named columns
+        print(h.decode_genomes([42])[42])  # the genome's text and body, as cambrian inspect
 """
 
 import os
@@ -359,6 +361,131 @@ class History:
         i = where[0]
         offset, size = int(table["genome_offset"][i]), int(table["genome_size"][i])
         return bytes(self._call("rows", "individuals/genome_bytes", offset, offset + size))
+
+
+    # --- the tables as pandas DataFrames (Debian's python3-pandas, imported on first use) ---
+
+    def generations_frame(self):
+        """The /generations table as a DataFrame indexed by generation (0-based)."""
+        import pandas as pd
+
+        frame = pd.DataFrame(self.generations())
+        return frame.set_index("generation", drop=False).rename_axis(None)
+
+    def individuals_frame(self, genomes=False):
+        """The /individuals table as a DataFrame, one row per row of the file (elites repeat
+        their id in later generations). Measures are named columns (``distance``, ...), status
+        and operator categorical names, parents nullable (<NA> for a random creature).
+        genomes=True adds ``genome``: each row's serialized genome as bytes (decode them with
+        decode_genomes)."""
+        import pandas as pd
+
+        table = self.individuals()
+        columns = {}
+        for name, column in table.items():
+            if name == "measures" or name.startswith("measure:"):
+                continue
+            columns[name] = column
+        frame = pd.DataFrame(columns)
+        for name in ("parent_a", "parent_b"):
+            values = pd.array(table[name], dtype="UInt64")
+            values[table[name] == NO_ID] = pd.NA
+            frame[name] = values
+        frame["status"] = pd.Categorical.from_codes(table["status"].astype(np.int64),
+                                                    self.status_names())
+        frame["operator"] = pd.Categorical.from_codes(table["operator"].astype(np.int64),
+                                                      self.operator_names())
+        for name in self.measure_names():
+            frame[name] = table["measure:" + name]
+        if genomes:
+            stream = self.genome_stream()
+            frame["genome"] = [bytes(stream[o : o + n]) for o, n in
+                               zip(table["genome_offset"].astype(np.int64),
+                                   table["genome_size"].astype(np.int64))]
+        return frame
+
+    def decode_genomes(self, ids, cambrian=None, body=True):
+        """dict id -> the genome's text (docs/genome.md), followed by its body statistics when
+        body=True: what ``cambrian inspect`` prints, for many genomes in one run of the binary
+        (``cambrian`` is its path; default: $CAMBRIAN_BINARY, the build tree, then PATH)."""
+        import subprocess
+        import tempfile
+
+        ids = [int(i) for i in ids]
+        if not ids:
+            return {}
+        binary = find_cambrian(cambrian)
+        table = self.individuals()
+        stream = self.genome_stream()
+        rows = first_rows(table)
+        with tempfile.TemporaryDirectory(prefix="cambrian-decode-") as folder:
+            config = os.path.join(folder, "config.ini")
+            with open(config, "w") as out:
+                out.write(str(self.attributes.get("config_text", "")))
+            paths = []
+            for individual in ids:
+                if individual not in rows:
+                    raise KeyError(f"{self.path}: no individual with id {individual}")
+                path = os.path.join(folder, f"{individual}.genome")
+                with open(path, "wb") as out:
+                    out.write(genome_of(stream, table, rows[individual]))
+                paths.append(path)
+            command = [binary, "inspect", "--config", config, *paths]
+            done = subprocess.run(command, capture_output=True, text=True)
+            if done.returncode != 0:
+                raise RuntimeError(f"{' '.join(command[:2])} failed (exit {done.returncode}): "
+                                   f"{done.stderr.strip()}")
+        texts = _split_inspected(done.stdout, paths)
+        if not body:
+            texts = [text.split("\n\n# body:")[0] + "\n" for text in texts]
+        return dict(zip(ids, texts))
+
+
+INSPECT_SEPARATOR = "==> "  # cambrian inspect's header line before each of several genomes
+
+
+def _split_inspected(output, paths):
+    """The texts of several genomes from one `cambrian inspect` output (one per path, in order;
+    each after a line "==> PATH <==")."""
+    if len(paths) == 1:
+        return [output]
+    texts, current = [], None
+    for line in output.splitlines(keepends=True):
+        if line.startswith(INSPECT_SEPARATOR) and line.rstrip().endswith(" <=="):
+            if current is not None:
+                texts.append("".join(current).rstrip("\n") + "\n")
+            current = []
+        elif current is not None:
+            current.append(line)
+    if current is not None:
+        texts.append("".join(current).rstrip("\n") + "\n")
+    if len(texts) != len(paths):
+        raise RuntimeError(f"cambrian inspect printed {len(texts)} genomes for {len(paths)} files")
+    return texts
+
+
+def find_cambrian(path=None):
+    """The cambrian binary: `path` (which must be one), else $CAMBRIAN_BINARY, else the release or CI build of this
+    source tree, else `cambrian` on PATH; FileNotFoundError naming what was tried."""
+    import shutil
+
+    if path:
+        if os.path.isfile(path) and os.access(path, os.X_OK):
+            return path
+        raise FileNotFoundError(f"{path}: no such cambrian binary")
+    tried = []
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    for candidate in (os.environ.get("CAMBRIAN_BINARY"),
+                      os.path.join(root, "build", "release", "src", "app", "cambrian"),
+                      os.path.join(root, "build", "ci", "src", "app", "cambrian"),
+                      shutil.which("cambrian")):
+        if not candidate:
+            continue
+        tried.append(candidate)
+        if os.path.isfile(candidate) and os.access(candidate, os.X_OK):
+            return candidate
+    raise FileNotFoundError("no cambrian binary found (tried " + ", ".join(tried) +
+                            "); pass its path or set CAMBRIAN_BINARY")
 
 
 def load(path):

@@ -109,6 +109,58 @@ def test_genome_bytes_by_id(history):
         history.genome_bytes(10**9)
 
 
+def test_frames_hold_the_tables(history):
+    pd = pytest.importorskip("pandas")
+    g, frame = history.generations(), history.generations_frame()
+    assert list(frame.index) == list(range(GENERATIONS))
+    for name, column in g.items():
+        assert np.array_equal(frame[name].to_numpy(), column), name
+    t, people = history.individuals(), history.individuals_frame()
+    assert len(people) == POPULATION * GENERATIONS
+    # measures are named columns, status and operator their names, parents <NA> when absent
+    assert np.array_equal(people["cost_us"].to_numpy(), t["measure:cost_us"])
+    assert np.array_equal(people["nodes"].to_numpy(), t["measure:nodes"])
+    assert "measures" not in people and "measure:nodes" not in people
+    assert list(people["operator"]) == list(ch.operator_labels(history, t))
+    assert set(people["status"].cat.categories) == set(history.status_names())
+    first = people[people["generation"] == 0]
+    assert first["parent_a"].isna().all() and first["parent_b"].isna().all()
+    crossover = people[people["operator"] == "crossover"]
+    assert len(crossover) and crossover["parent_b"].notna().all()
+    assert people["parent_a"].dtype == pd.UInt64Dtype()
+    # the frame answers the questions a user asks of it, as the arrays do
+    best = people.groupby("generation")["fitness"].max()
+    assert np.array_equal(best.to_numpy(), g["best"])
+    # genomes as bytes on request, the same as genome_bytes
+    with_genomes = history.individuals_frame(genomes=True)
+    for row in with_genomes.head(5).itertuples():
+        assert row.genome == history.genome_bytes(row.id)
+
+
+def test_genomes_decoded_on_request(history):
+    if not os.environ.get("CAMBRIAN_BINARY"):
+        pytest.skip("CAMBRIAN_BINARY not set (run through ctest)")
+    people = history.individuals_frame()
+    last = people[people["generation"] == GENERATIONS - 1]
+    ids = [int(i) for i in last["id"].head(3)]
+    texts = history.decode_genomes(ids)
+    assert list(texts) == ids
+    for individual in ids:
+        text = texts[individual]
+        assert text.startswith("cambrian-genome")
+        assert "\n# body: " in text and "\nend\n" in text
+        # the synthetic task's `nodes` measure is the genome's gene count
+        nodes = int(last[last["id"] == individual]["nodes"].iloc[0])
+        assert sum(line.startswith("node ") for line in text.splitlines()) == nodes
+    plain = history.decode_genomes(ids[:1], body=False)[ids[0]]
+    assert plain.startswith("cambrian-genome") and "# body" not in plain
+    assert texts[ids[0]].startswith(plain.rstrip("\n"))
+    with pytest.raises(KeyError):
+        history.decode_genomes([10**9])
+    with pytest.raises(FileNotFoundError, match="no-such-binary"):
+        history.decode_genomes(ids, cambrian="/no-such-binary")
+
+
 def test_load_returns_everything(history_path):
     attributes, individuals, generations = ch.load(history_path)
     assert attributes["format"] == "cambrian-history"

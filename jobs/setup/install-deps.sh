@@ -12,7 +12,7 @@ packages=(
   libboost-program-options-dev
   googletest libgtest-dev
   librandom123-dev
-  python3 python3-h5py python3-numpy python3-matplotlib python3-pytest python3-pil
+  python3 python3-h5py python3-numpy python3-matplotlib python3-pytest python3-pil python3-pandas
   slurm-wlm slurm-client munge
 )
 

@@ -266,5 +266,26 @@ TEST(InspectCommand, PrintsGenomeAndBody) {
   EXPECT_NE(result.output.find("# body: 5 parts, 4 joints"), std::string::npos) << result.output;
 }
 
+// several genomes in one run, each after a header naming its file, in the order given; a bad
+// one among them names its file and fails the command
+TEST(InspectCommand, PrintsSeveralGenomesEachAfterItsName) {
+  const std::string walker = kCreatures + "walker4.genome", pole = kCreatures + "pole.genome";
+  auto result = runCambrian("inspect " + walker + " " + pole);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const std::size_t first = result.output.find("==> " + walker + " <==");
+  const std::size_t second = result.output.find("==> " + pole + " <==");
+  ASSERT_NE(first, std::string::npos) << result.output;
+  ASSERT_NE(second, std::string::npos) << result.output;
+  EXPECT_LT(first, second);
+  const std::size_t walker_body = result.output.find("# body: 5 parts, 4 joints");
+  EXPECT_GT(walker_body, first);
+  EXPECT_LT(walker_body, second);
+  EXPECT_NE(result.output.find("# body:", second), std::string::npos);
+
+  auto bad = runCambrian("inspect " + walker + " /dev/zero");
+  EXPECT_EQ(bad.exit_code, code(ExitCode::input_file)) << bad.output;
+  EXPECT_NE(bad.output.find("/dev/zero"), std::string::npos) << bad.output;
+}
+
 }  // namespace
 }  // namespace cambrian
