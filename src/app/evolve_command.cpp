@@ -20,6 +20,7 @@
 #include <malloc.h>
 #include <sstream>
 #include <string_view>
+#include <unistd.h>
 
 namespace cambrian {
 
@@ -232,6 +233,7 @@ int runEvolve(int argc, char** argv) {
     // Chaumont 5.5: new bodies that overlap themselves are redrawn before evaluation
     RunSettings run = s.run;
     run.rank_count = mpi.size();
+    run.terminal = isatty(STDOUT_FILENO) == 1;
     run.stop_requested = stopRequested;
     run.stop_reason = stopSignalName;
     if (creature.task().needsBody()) {

@@ -113,6 +113,7 @@ EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_
     store(individual, result.outcome, 0);
     span.busy_seconds += result.outcome.wall_seconds;
     ++span.evaluations;
+    reportProgress(span.evaluations, order_size);
     // testing aid: a kill in the middle of the generation
     if (2 * span.evaluations >= order_size && 2 * (span.evaluations - 1) < order_size)
       testKillPoint("evaluation", population.generation);
@@ -227,6 +228,7 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
       testKillPoint("evaluation", population.generation);
     fill(message.source);
     span.dispatch_seconds += since(receive_start);
+    reportProgress(span.evaluations, order.size());
   }
   // every result is in, so every request was received
   mpi_.waitPosted();

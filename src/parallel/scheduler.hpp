@@ -66,6 +66,21 @@ class PopulationEvaluator {
                                   const std::function<void()>& meanwhile = {}) = 0;
   /// Ranks that evaluate.
   virtual int workers() const = 0;
+
+  /// Called on rank 0 after each result of evaluate(): results in so far and results due.
+  using Progress = std::function<void(std::size_t done, std::size_t due)>;
+  /// Sets (or, empty, clears) the function told of each result.
+  void onProgress(Progress progress) { progress_ = std::move(progress); }
+
+ protected:
+  /// Tells the progress function, when there is one.
+  void reportProgress(std::size_t done, std::size_t due) const {
+    if (progress_)
+      progress_(done, due);
+  }
+
+ private:
+  Progress progress_;
 };
 
 /// Evaluates in this process, one creature after another (a job with one rank).

@@ -361,8 +361,16 @@ class EvolutionRun {
     OutcomeReuse reuse;
     if (run_.reuse_outcomes && run_.repeatable)
       reuse = reuseKnownOutcomes(population, last_ ? &*last_ : nullptr);
+    const bool live = run_.liveProgress();
+    if (live)
+      evaluator_.onProgress(
+          [this, g](std::size_t done, std::size_t due) { liveLine(g, done, due); });
     EvaluationSpan span =
         evaluator_.evaluate(population, settings_.seed, [&] { finishPending(false); });
+    if (live) {
+      evaluator_.onProgress({});
+      clearLiveLine();
+    }
     copySiblingOutcomes(population, reuse);
 
     // summarise in id order (the times so far; closed when the next generation starts)
@@ -385,6 +393,33 @@ class EvolutionRun {
     walls_.push_back(record.wall_seconds);
     pending_ = Pending{result_.generations.size() - 1, breeder_.nextId()};
     progress(g, record, reuse.from_parents + reuse.siblings.size());
+  }
+
+  // the live line within generation g, rewritten in place at most every 0.25 s (and at the
+  // first and last result): evaluations done of those due, the generation's ETA
+  void liveLine(std::uint64_t g, std::size_t done, std::size_t due) {
+    const auto now = Clock::now();
+    if (live_shown_ && done != 1 && done != due &&
+        std::chrono::duration<double>(now - live_time_).count() < 0.25)
+      return;
+    const double elapsed = secondsSince(generation_start_);
+    const double eta =
+        done == 0 ? 0 : elapsed / static_cast<double>(done) * static_cast<double>(due - done);
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "\r\033[K  gen %llu/%d  evaluated %zu/%zu (population %d)  eta %s",
+                  static_cast<unsigned long long>(g + 1), settings_.generations, done, due,
+                  settings_.population, clockText(eta).c_str());
+    out_ << line << std::flush;
+    live_shown_ = true;
+    live_time_ = now;
+  }
+
+  // wipes the live line, so that the generation's line takes its place
+  void clearLiveLine() {
+    if (live_shown_)
+      out_ << "\r\033[K" << std::flush;
+    live_shown_ = false;
   }
 
   // the progress line and, verbose, its details (`reused`: copies that took an outcome)
@@ -438,6 +473,8 @@ class EvolutionRun {
   double checkpoint_seconds_max_ = 0;
   Clock::time_point generation_start_ = Clock::now();
   double generation_cpu_start_ = 0;
+  bool live_shown_ = false;                     // the live line is on the terminal
+  Clock::time_point live_time_ = Clock::now();  // when it was last written
 };
 
 }  // namespace

@@ -17,6 +17,12 @@ void RunSettings::declareSettings(SettingsSchema& s) {
       .runOnly();
   s.add("run.quiet", r.quiet, "no progress lines, only the digest").runOnly();
   s.add("run.verbose", r.verbose, "timing details after each progress line").runOnly();
+  s.add("run.progress", r.progress,
+        "a live line within each generation (evaluations done / population, the generation's "
+        "ETA), rewritten in place: auto (when standard output is a terminal) | live | plain "
+        "(the generation lines only, as in a batch log)")
+      .oneOf({"auto", "live", "plain"})
+      .runOnly();
   s.add("run.checkpoint_every", r.checkpoint_every,
         "write DIR/checkpoint.h5 every this many generations (0 = no generation cadence; a "
         "checkpoint always follows the last generation and precedes a clean stop)")

@@ -19,7 +19,10 @@ struct RunSettings {
   std::string out_dir = "cambrian-run";  ///< history.h5, individuals.tsv, generations.tsv go here
   bool quiet = false;                    ///< no progress lines, only the digest
   bool verbose = false;                  ///< timing details after each progress line
-  int checkpoint_every = 0;              ///< checkpoint every this many generations (0: no cadence)
+  /// the live line within a generation: "auto" (when standard output is a terminal), "live"
+  /// or "plain" (generation lines only)
+  std::string progress = "auto";
+  int checkpoint_every = 0;       ///< checkpoint every this many generations (0: no cadence)
   double checkpoint_minutes = 1;  ///< ... or when this many minutes passed since the last (0: off)
   double max_hours = 0;           ///< stop cleanly before this wall time (0: no limit)
   std::string test_kill_at;       ///< testing: "POINT:GENERATION" where rank 0 SIGKILLs itself
@@ -30,6 +33,7 @@ struct RunSettings {
   ViabilityCheck viable;    ///< birth test for new individuals (none: accept all), rank 0 only
   bool repeatable = false;  ///< the task's outcome is a function of genome and settings only
   bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
+  bool terminal = false;    ///< standard output is a terminal (progress "auto" goes live)
   bool fresh = false;       ///< ignore and remove an existing checkpoint, start over
   std::string config_text;  ///< the effective settings as INI text, stored in the history
   std::string earlier_config_text;     ///< what each setting was in runs stored before it existed,
@@ -42,6 +46,10 @@ struct RunSettings {
 
   /// Declares the [run] keys (all run-only), bound to this object, with their ranges.
   void declareSettings(SettingsSchema& schema);
+  /// Whether the live line within a generation is shown (progress, terminal, quiet).
+  bool liveProgress() const {
+    return !quiet && (progress == "live" || (progress == "auto" && terminal));
+  }
 };
 
 }  // namespace cambrian

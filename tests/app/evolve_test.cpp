@@ -263,6 +263,38 @@ TEST(EvolveCommand, ResumingACheckpointOfAnotherVersionWarns) {
             std::string(bulletPrecision()));
 }
 
+// the live line within a generation: written in place ("\r", erase line) when asked for or on
+// a terminal, wiped before each generation's line; none in a log (a pipe, as here) or when quiet
+TEST(EvolveCommand, TheLiveLineIsShownWhenAskedForAndNeverInALog) {
+  const std::string erase = "\r\033[K";
+  std::string arguments = tinyRun(freshDir("live"));
+  arguments.replace(arguments.find(" --quiet"), 8, "");
+  auto live = runCambrian(arguments + " --run.progress live");
+  ASSERT_EQ(live.exit_code, 0) << live.output;
+  EXPECT_NE(live.output.find(erase + "  gen 1/2  evaluated 1/6 (population 6)  eta "), std::string::npos)
+      << live.output;
+  EXPECT_NE(live.output.find(erase + "  gen 1/2  evaluated 6/6 (population 6)  eta "), std::string::npos)
+      << live.output;
+  // each generation's line starts after the live line was wiped
+  EXPECT_NE(live.output.find(erase + "gen 1/2  best "), std::string::npos) << live.output;
+  EXPECT_NE(live.output.find(erase + "gen 2/2  best "), std::string::npos) << live.output;
+
+  arguments = tinyRun(freshDir("plain"));
+  arguments.replace(arguments.find(" --quiet"), 8, "");
+  auto log = runCambrian(arguments);  // auto, and the output is a pipe
+  ASSERT_EQ(log.exit_code, 0) << log.output;
+  EXPECT_NE(log.output.find("gen 2/2  best "), std::string::npos) << log.output;
+  EXPECT_EQ(log.output.find('\r'), std::string::npos) << log.output;
+
+  auto quiet = runCambrian(tinyRun(freshDir("quiet")) + " --run.progress live");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find('\r'), std::string::npos) << quiet.output;
+
+  auto bad = runCambrian(tinyRun(freshDir("bad_progress")) + " --run.progress sometimes");
+  EXPECT_EQ(bad.exit_code, test::code(ExitCode::config)) << bad.output;
+  EXPECT_NE(bad.output.find("run.progress"), std::string::npos) << bad.output;
+}
+
 TEST(EvolveCommand, HelpShowsDefaultsAsWritten) {
   auto help = runCambrian("evolve --help");
   EXPECT_EQ(help.exit_code, 0);
