@@ -104,6 +104,7 @@ struct EvalFrame {
   /// let go; empty for most creatures.
   std::span<const Transform> held_poses;
   std::span<const std::uint8_t> held_released;  ///< per held object: 1 once it has been let go
+  Vec3 light;  ///< where the light the photosensors point at is now, world, m
 };
 
 /// Watches an evaluation, e.g. to record a trajectory for rendering. It only reads: an
@@ -115,8 +116,8 @@ class FrameObserver {
   virtual std::uint64_t frameStride() const = 0;
   /// Called once the world is built, before the first frame; never for a creature that does not
   /// reach the physics (invalid genome, no parts, a task without bodies). `plan` outlives the
-  /// frames; `time_step` is the physics step, s.
-  virtual void begin(const BodyPlan& plan, double time_step) = 0;
+  /// frames; `time_step` is the physics step, s; `environment` what surrounds the body.
+  virtual void begin(const BodyPlan& plan, double time_step, const Environment& environment) = 0;
   /// Called at birth (step 0) and after every frameStride()-th step while every rule holds.
   virtual void frame(const EvalFrame& frame) = 0;
 };

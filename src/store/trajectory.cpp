@@ -96,7 +96,8 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
       writeScalar(file, "time_step", t.time_step) &&
       writeScalar<std::uint64_t>(file, "frame_stride", t.frame_stride) &&
       writeScalar(file, "frame_rate", t.frame_rate) &&
-      writeString(file, "genome_text", t.genome_text);
+      writeString(file, "genome_text", t.genome_text) && writeString(file, "ground", t.ground) &&
+      writeScalar(file, "viscosity", t.viscosity);
   if (!ok)
     return false;
 
@@ -145,8 +146,25 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
                       "half the box size along the part's own x, y, z axes") &&
        writeDescribed(group.get(), "parent", {parts}, H5T_NATIVE_INT32, parents.data(), "1",
                       "index of the parent part; -1 for the root");
-  if (!ok || t.heldCount() == 0)
-    return ok;
+  if (!ok)
+    return false;
+
+  // the light, when recorded
+  if (!t.light.empty()) {
+    what = "the /light group";
+    Handle light_group(H5Gcreate2(file, "light", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    std::vector<double> light;
+    for (const Vec3& l : t.light)
+      light.insert(light.end(), {l.x, l.y, l.z});
+    if (!light_group.valid() ||
+        !writeString(light_group.get(), "description",
+                     "the point the photosensors point at, per frame (the task may move it)") ||
+        !writeDescribed(light_group.get(), "position", {frames, 3}, H5T_NATIVE_DOUBLE, light.data(),
+                        "m", "world position of the light in each frame"))
+      return false;
+  }
+  if (t.heldCount() == 0)
+    return true;
 
   // the held objects (a catapult's projectile), only when there are any
   what = "the /held group";
@@ -184,9 +202,12 @@ TrajectoryRecorder::TrajectoryRecorder(std::uint64_t stride)
   trajectory_.frame_stride = stride_;
 }
 
-void TrajectoryRecorder::begin(const BodyPlan& plan, double time_step) {
-  // a fresh recording of this body
+void TrajectoryRecorder::begin(const BodyPlan& plan, double time_step,
+                               const Environment& environment) {
+  // a fresh recording of this body, in this environment
   Trajectory fresh;
+  fresh.ground = environment.ground.kind == Ground::Kind::none ? "none" : "plane";
+  fresh.viscosity = environment.fluid.viscosity;
   fresh.frame_stride = stride_;
   fresh.time_step = time_step;
   fresh.frame_rate = 1.0 / (static_cast<double>(stride_) * time_step);
@@ -211,6 +232,7 @@ void TrajectoryRecorder::frame(const EvalFrame& frame) {
                                 frame.held_poses.end());
   trajectory_.held_released.insert(trajectory_.held_released.end(), frame.held_released.begin(),
                                    frame.held_released.end());
+  trajectory_.light.push_back(frame.light);
 }
 
 std::uint64_t frameStrideFor(double frame_rate, double time_step) {
@@ -235,7 +257,8 @@ void writeTrajectory(const std::string& path, const Trajectory& t) {
   if (t.parent.size() != parts || t.step.size() != frames || t.phase.size() != frames ||
       t.center_of_mass.size() != frames || t.poses.size() != frames * parts ||
       t.held_part.size() != t.heldCount() || t.held_poses.size() != frames * t.heldCount() ||
-      t.held_released.size() != frames * t.heldCount()) {
+      t.held_released.size() != frames * t.heldCount() ||
+      (!t.light.empty() && t.light.size() != frames)) {
     throw Error(ExitCode::failure, path + ": inconsistent trajectory (" + std::to_string(frames) +
                                        " frames, " + std::to_string(parts) + " parts, " +
                                        std::to_string(t.poses.size()) + " poses)");
@@ -300,6 +323,13 @@ Trajectory readTrajectory(const std::string& path) {
             readString(f, "genome_text", t.genome_text);
   if (!ok)
     fail("a root attribute is missing or of the wrong type");
+  // the surroundings (files of before have neither: a plane, no fluid)
+  if (H5Aexists(f, "ground") > 0 && !readString(f, "ground", t.ground))
+    fail("root attribute 'ground' unreadable");
+  if (t.ground != "plane" && t.ground != "none")
+    fail("root attribute 'ground' is '" + t.ground + "', not plane or none");
+  if (H5Aexists(f, "viscosity") > 0 && !readScalar(f, "viscosity", t.viscosity))
+    fail("root attribute 'viscosity' unreadable");
 
   // the datasets, with shapes checked against each other
   std::vector<hsize_t> dims;
@@ -346,6 +376,16 @@ Trajectory readTrajectory(const std::string& path) {
     t.center_of_mass.push_back({com[3 * i], com[3 * i + 1], com[3 * i + 2]});
   }
   t.poses = unflattenPoses(position, orientation, frames * parts);
+
+  // the light, when recorded
+  if (H5Lexists(f, "light", H5P_DEFAULT) > 0) {
+    std::vector<double> light;
+    need(readDataset(f, "light/position", light, dims), "light/position");
+    if (dims != std::vector<hsize_t>{frames, 3})
+      fail("dataset /light/position has the wrong shape for " + std::to_string(frames) + " frames");
+    for (hsize_t i = 0; i < frames; ++i)
+      t.light.push_back({light[3 * i], light[3 * i + 1], light[3 * i + 2]});
+  }
 
   // the held objects, when the file has any (files without /held hold none)
   if (H5Lexists(f, "held", H5P_DEFAULT) <= 0)

@@ -53,6 +53,12 @@ struct Trajectory {
   std::vector<Transform> held_poses;        ///< frames x held world poses (frame-major)
   std::vector<std::uint8_t> held_released;  ///< frames x held: 1 once it has been let go
 
+  // what surrounds the body (root attributes ground and viscosity; /light when recorded)
+  std::string ground = "plane";  ///< "plane" (a ground plane at z = 0) or "none" (water)
+  double viscosity = 0;          ///< the fluid's, N s / m^3; 0: none
+  /// the light's position per frame (what the photosensors point at); empty in files of before
+  std::vector<Vec3> light;
+
   /// Number of parts.
   std::size_t partCount() const { return half_extents.size(); }
   /// Number of held objects.
@@ -69,8 +75,9 @@ class TrajectoryRecorder : public FrameObserver {
   explicit TrajectoryRecorder(std::uint64_t stride);
   /// The stride given at construction.
   std::uint64_t frameStride() const override { return stride_; }
-  /// Takes the part and held-object sizes from `plan`; forgets any earlier recording.
-  void begin(const BodyPlan& plan, double time_step) override;
+  /// Takes the part and held-object sizes from `plan`, the ground and fluid from `environment`;
+  /// forgets any earlier recording.
+  void begin(const BodyPlan& plan, double time_step, const Environment& environment) override;
   /// Appends one frame.
   void frame(const EvalFrame& frame) override;
   /// What has been recorded so far (time_step and frame_stride set by begin()).

@@ -72,7 +72,7 @@ Episode::Episode(const Creature& creature, const Environment& environment,
   // the observer sees the body at birth, then every stride steps
   if (observer_) {
     stride_ = std::max<std::uint64_t>(1, observer_->frameStride());
-    observer_->begin(plan, physics.time_step);
+    observer_->begin(plan, physics.time_step, environment);
     show(EvalPhase::settle);
   }
 }
@@ -96,6 +96,7 @@ void Episode::show(EvalPhase phase) {
   frame.poses = poses_;
   frame.held_poses = held_poses_;
   frame.held_released = held_released_;
+  frame.light = simulation_->light();
   observer_->frame(frame);
 }
 

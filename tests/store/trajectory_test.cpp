@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -86,6 +87,9 @@ void expectSame(const Trajectory& a, const Trajectory& b) {
     EXPECT_EQ(a.held_poses[i].position, b.held_poses[i].position) << "held pose " << i;
     EXPECT_EQ(a.held_poses[i].rotation, b.held_poses[i].rotation) << "held pose " << i;
   }
+  EXPECT_EQ(a.ground, b.ground);
+  EXPECT_EQ(a.viscosity, b.viscosity);
+  EXPECT_EQ(a.light, b.light);
 }
 
 // makeTrajectory with a projectile held by part 0 and let go after frame 2
@@ -144,6 +148,29 @@ TEST(Trajectory, HeldObjectsRoundTrip) {
   EXPECT_EQ(thrownCode([&] { writeTrajectory(path, broken); }),
             static_cast<int>(ExitCode::failure));
   EXPECT_EQ(readTrajectory(path).heldCount(), 0u);
+}
+
+// the surroundings (no ground, a fluid, a light moving frame by frame) survive bit for bit; a
+// trajectory without a light writes no /light group and reads back none
+TEST(Trajectory, SurroundingsRoundTrip) {
+  std::string path = tempPath("surroundings.h5");
+  Trajectory written = makeTrajectory();
+  written.ground = "none";
+  written.viscosity = 1.0 / 7.0;
+  for (std::size_t f = 0; f < written.frameCount(); ++f)
+    written.light.push_back({5.0 + 0.1 * static_cast<double>(f), -1.0 / 3.0, 0.25});
+  writeTrajectory(path, written);
+  expectSame(readTrajectory(path), written);
+  writeTrajectory(path, makeTrajectory());
+  const Trajectory plain = readTrajectory(path);
+  EXPECT_TRUE(plain.light.empty());
+  EXPECT_EQ(plain.ground, "plane");
+  EXPECT_EQ(plain.viscosity, 0);
+  // a light missing a frame is refused before anything is written
+  written.light.pop_back();
+  EXPECT_EQ(thrownCode([&] { writeTrajectory(path, written); }),
+            static_cast<int>(ExitCode::failure));
+  EXPECT_TRUE(readTrajectory(path).light.empty());
 }
 
 // writing over an existing file replaces it whole
@@ -353,6 +380,54 @@ TEST(TrajectoryRecorder, AHeldProjectileIsRecorded) {
   ASSERT_LT(first_free, t.frameCount());
   EXPECT_EQ(t.phase[first_free], EvalPhase::measure);
   EXPECT_NEAR(t.held_poses.back().position.z, 0.05, 5e-3);
+}
+
+// a follower of the light in water: the recording says there is no ground and which fluid, and
+// holds the light in every frame, where the task put it (light_distance from the centre of mass
+// at the start of each measured share, then moved); a walk records its still light, on a plane
+TEST(TrajectoryRecorder, TheWaterAndTheMovingLightAreRecorded) {
+  CreatureSettings settings;
+  settings.set("task.name", "follow_light");
+  settings.set("task.evaluation_time", "2");
+  settings.set("task.light_trials", "1");
+  settings.set("task.light_positions", "2");
+  settings.set("task.light_distance", "5");
+  settings.set("genome.photosensors", "every_part");
+  settings.set("environment.name", "water");
+  settings.check();
+  const Genotype genome = settings.encoding().fromText(
+      "cambrian-genome 2\nnode 0 size 0.5 0.3 0.2 density 1000 joint rigid limit 1 1 1 recursion "
+      "1\nend\n",
+      "test");
+  TrajectoryRecorder recorder(4);
+  const Outcome outcome = evaluate(genome, settings, 0, &recorder);
+  ASSERT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
+  const Trajectory& t = recorder.trajectory();
+  EXPECT_EQ(t.ground, "none");
+  EXPECT_GT(t.viscosity, 0);
+  ASSERT_EQ(t.light.size(), t.frameCount());
+  // the measured frames see the light in two places, each 5 m from where the body was
+  std::vector<Vec3> places;
+  for (std::size_t f = 0; f < t.frameCount(); ++f) {
+    if (t.phase[f] == EvalPhase::measure && (places.empty() || !(places.back() == t.light[f])))
+      places.push_back(t.light[f]);
+  }
+  ASSERT_EQ(places.size(), 2u);
+  for (const Vec3& place : places) {
+    const Vec3 offset = place - t.center_of_mass.back();
+    EXPECT_NEAR(std::hypot(offset.x, offset.y), 5.0, 0.05);  // a still block in still water
+  }
+
+  CreatureSettings walk;
+  walk.set("task.evaluation_time", "1");
+  walk.check();
+  TrajectoryRecorder plain(8);
+  ASSERT_EQ(evaluate(genome, walk, 0, &plain).status, EvalStatus::ok);
+  ASSERT_EQ(plain.trajectory().light.size(), plain.trajectory().frameCount());
+  EXPECT_EQ(plain.trajectory().light.front(), (Vec3{10, 0, 0}));  // the plane's light
+  EXPECT_EQ(plain.trajectory().light.back(), (Vec3{10, 0, 0}));
+  EXPECT_EQ(plain.trajectory().ground, "plane");
+  EXPECT_EQ(plain.trajectory().viscosity, 0);
 }
 
 }  // namespace

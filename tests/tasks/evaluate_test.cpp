@@ -197,7 +197,7 @@ TEST(Evaluate, NonFiniteStateIsCaught) {
 class ThrowingObserver : public FrameObserver {
  public:
   std::uint64_t frameStride() const override { return 1; }
-  void begin(const BodyPlan&, double) override {}
+  void begin(const BodyPlan&, double, const Environment&) override {}
   void frame(const EvalFrame& frame) override {
     if (frame.step == 100)
       throw std::runtime_error("observer gave up at step 100");
@@ -245,7 +245,7 @@ TEST(Evaluate, JumpOfPassiveCreature) {
 class LowestPointRecorder : public FrameObserver {
  public:
   std::uint64_t frameStride() const override { return 1; }
-  void begin(const BodyPlan& plan, double) override { plan_ = &plan; }
+  void begin(const BodyPlan& plan, double, const Environment&) override { plan_ = &plan; }
   void frame(const EvalFrame& frame) override {
     double lowest = INFINITY;
     for (std::size_t i = 0; i < frame.poses.size(); ++i) {
@@ -406,7 +406,7 @@ CreatureSettings withoutRestCheck(CreatureSettings settings) {
 class PhaseRecorder : public FrameObserver {
  public:
   std::uint64_t frameStride() const override { return 1; }
-  void begin(const BodyPlan&, double) override {}
+  void begin(const BodyPlan&, double, const Environment&) override {}
   void frame(const EvalFrame& frame) override {
     phases.push_back(frame.phase);
     positions.emplace_back();
