@@ -16,6 +16,7 @@
 #include "tasks/task.hpp"
 
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <malloc.h>
 #include <sstream>
@@ -172,6 +173,22 @@ int printHelp(int argc, char** argv) {
   return 0;
 }
 
+// Whether what rank 0 prints reaches a terminal. Under mpirun rank 0 writes to a pseudo-terminal
+// of the launcher's whatever the launcher itself writes to (a log file, a pipe), so there the
+// launcher's own standard output decides: a terminal device, or not.
+bool outputReachesATerminal() {
+  if (isatty(STDOUT_FILENO) != 1)
+    return false;
+  const bool launched =
+      std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
+  if (!launched)
+    return true;
+  std::error_code error;
+  const std::string target =
+      std::filesystem::read_symlink("/proc/" + std::to_string(getppid()) + "/fd/1", error).string();
+  return !error && (target.rfind("/dev/pts/", 0) == 0 || target.rfind("/dev/tty", 0) == 0);
+}
+
 }  // namespace
 
 int runEvolve(int argc, char** argv) {
@@ -233,7 +250,7 @@ int runEvolve(int argc, char** argv) {
     // Chaumont 5.5: new bodies that overlap themselves are redrawn before evaluation
     RunSettings run = s.run;
     run.rank_count = mpi.size();
-    run.terminal = isatty(STDOUT_FILENO) == 1;
+    run.terminal = outputReachesATerminal();
     run.stop_requested = stopRequested;
     run.stop_reason = stopSignalName;
     if (creature.task().needsBody()) {
