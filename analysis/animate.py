@@ -72,6 +72,8 @@ def load_trajectory(path):
                     np.asarray(held[name][()]) if held else np.zeros((frames, 0, width))
                 )
             data["held_released"] = np.asarray(held["released"][()]) if held else np.zeros((frames, 0))
+            # the light (absent in files of before) and the surroundings (plane, no fluid then)
+            data["light"] = np.asarray(file["light/position"][()]) if "light" in file else None
     except OSError as error:
         raise TrajectoryError(f"{path}: not a readable HDF5 file ({error})") from error
     except KeyError as error:
@@ -82,9 +84,13 @@ def load_trajectory(path):
     held = len(data["held_half_extents"])
     if data["held_position"].shape != (frames, held, 3) or data["held_orientation"].shape != (frames, held, 4):
         raise TrajectoryError(f"{path}: /held/position or /held/orientation does not match {frames} frames x {held} objects")
+    if data["light"] is not None and data["light"].shape != (frames, 3):
+        raise TrajectoryError(f"{path}: /light/position does not match {frames} frames")
     data["attributes"] = {
         key: (value.decode() if isinstance(value, bytes) else value) for key, value in attributes.items()
     }
+    data["ground"] = str(data["attributes"].get("ground", "plane"))
+    data["viscosity"] = float(data["attributes"].get("viscosity", 0.0))
     data["path"] = path
     return data
 

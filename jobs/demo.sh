@@ -34,8 +34,14 @@ python=/usr/bin/python3
 "$cambrian" replay --history "$out/history.h5" --best --export "$out/best.h5"
 "$python" analysis/animate.py "$out/best.h5" --output "$out/best.gif" --max-frames 180
 
+# the best of the first, middle and last generations side by side, in the browser (one file)
+last=$(tail -n 1 "$out/generations.tsv" | cut -f 1)
+"$python" analysis/view.py --history "$out/history.h5" --cambrian "$cambrian" \
+  --generation 0 $((last / 2)) "$last" --output "$out/view.html" > /dev/null
+
 echo
 echo "run files:     $out/ (history.h5, checkpoint.h5, individuals.tsv, generations.tsv)"
 echo "fitness plot:  $out/fitness.png"
 echo "lineage:       $out/lineage.png, $out/lineage.tsv"
 echo "best creature: $out/best.gif (trajectory $out/best.h5)"
+echo "in a browser:  $out/view.html (generations 0, $((last / 2)) and $last, three.js, offline)"
