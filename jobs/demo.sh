@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up (Debian packages), builds, and runs a small walking evolution on all local cores,
-# then writes the fitness plot, the lineage of the best creature and an animation of it, and
-# prints where they are.
+# then writes the fitness plot, the lineage of the best creature, an animation of it and the
+# run's report (a web page with the creatures in a 3-D viewer), and prints where they are.
 # usage: bash jobs/demo.sh [extra `cambrian evolve` options, e.g. --seed 2]
 # environment (for tests): CAMBRIAN=binary skips the set-up and the build; DEMO_OUT=dir
 set -euo pipefail
@@ -34,14 +34,13 @@ python=/usr/bin/python3
 "$cambrian" replay --history "$out/history.h5" --best --export "$out/best.h5"
 "$python" analysis/animate.py "$out/best.h5" --output "$out/best.gif" --max-frames 180
 
-# the best of the first, middle and last generations side by side, in the browser (one file)
-last=$(tail -n 1 "$out/generations.tsv" | cut -f 1)
-"$python" analysis/view.py --history "$out/history.h5" --cambrian "$cambrian" \
-  --generation 0 $((last / 2)) "$last" --output "$out/view.html" > /dev/null
+# the run's report: settings, fitness, lineage, operators, diversity, load, and the best of the
+# first, middle and last generations in the browser viewer (one self-contained file)
+"$python" analysis/report.py "$out" --cambrian "$cambrian" > /dev/null
 
 echo
 echo "run files:     $out/ (history.h5, checkpoint.h5, individuals.tsv, generations.tsv)"
 echo "fitness plot:  $out/fitness.png"
 echo "lineage:       $out/lineage.png, $out/lineage.tsv"
 echo "best creature: $out/best.gif (trajectory $out/best.h5)"
-echo "in a browser:  $out/view.html (generations 0, $((last / 2)) and $last, three.js, offline)"
+echo "report:        $out/report.html (open it in a browser; the creatures play in it)"
