@@ -41,6 +41,14 @@ class TrajectoryError(Exception):
     """A trajectory file is missing, not HDF5, foreign, of a newer version or inconsistent."""
 
 
+def _shape_names(file, name, count):
+    """The shape name of each entry of a shape dataset (files of before have none: boxes)."""
+    if name not in file:
+        return ["box"] * count
+    names = [n.decode() if isinstance(n, bytes) else str(n) for n in file[name].attrs["names"]]
+    return [names[int(code)] for code in file[name][()]]
+
+
 def load_trajectory(path):
     """Reads a traj.h5 into a dict of numpy arrays and attributes; TrajectoryError names the
     file and what is wrong."""
@@ -63,6 +71,7 @@ def load_trajectory(path):
             }
             data["half_extents"] = np.asarray(file["part/half_extents"][()])
             data["parent"] = np.asarray(file["part/parent"][()])
+            data["shape"] = _shape_names(file, "part/shape", len(data["parent"]))
             # objects held at birth (a catapult's projectile): /held, absent when there are none
             held = file["held"] if "held" in file else None
             data["held_half_extents"] = np.asarray(held["half_extents"][()]) if held else np.zeros((0, 3))
@@ -72,6 +81,7 @@ def load_trajectory(path):
                     np.asarray(held[name][()]) if held else np.zeros((frames, 0, width))
                 )
             data["held_released"] = np.asarray(held["released"][()]) if held else np.zeros((frames, 0))
+            data["held_shape"] = _shape_names(file, "held/shape", len(data["held_half_extents"]))
             # the light (absent in files of before) and the surroundings (plane, no fluid then)
             data["light"] = np.asarray(file["light/position"][()]) if "light" in file else None
     except OSError as error:

@@ -75,6 +75,7 @@ def scene_of(trajectory, label=""):
         "parts": {
             "half_extents": np.asarray(trajectory["half_extents"], dtype=float).tolist(),
             "parent": np.asarray(trajectory["parent"], dtype=int).tolist(),
+            "shape": list(trajectory["shape"]),
         },
         "position": _rounded(trajectory["position"], POSITION_DECIMALS),
         "orientation": _rounded(trajectory["orientation"], ORIENTATION_DECIMALS),
@@ -84,6 +85,7 @@ def scene_of(trajectory, label=""):
     if len(trajectory["held_half_extents"]):
         scene["held"] = {
             "half_extents": np.asarray(trajectory["held_half_extents"], dtype=float).tolist(),
+            "shape": list(trajectory["held_shape"]),
             "position": _rounded(trajectory["held_position"], POSITION_DECIMALS),
             "orientation": _rounded(trajectory["held_orientation"], ORIENTATION_DECIMALS),
             "released": np.asarray(trajectory["held_released"], dtype=int).ravel().tolist(),

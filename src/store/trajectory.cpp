@@ -38,6 +38,32 @@ bool writeDescribed(hid_t location, const char* name, const std::vector<hsize_t>
   return dataset.valid() && describe(dataset.get(), units, description);
 }
 
+// the shape names, index = PartShape value
+const std::vector<std::string>& shapeNames() {
+  static const std::vector<std::string> names = {
+      shapeName(PartShape::box), shapeName(PartShape::capsule), shapeName(PartShape::sphere),
+      shapeName(PartShape::cylinder)};
+  return names;
+}
+
+// shapes as the uint8 values a shape dataset holds
+std::vector<std::uint8_t> shapeCodes(const std::vector<PartShape>& shapes) {
+  std::vector<std::uint8_t> codes;
+  for (PartShape shape : shapes)
+    codes.push_back(static_cast<std::uint8_t>(shape));
+  return codes;
+}
+
+// a shape dataset of `count` entries, with its names attribute; false on failure
+bool writeShapes(hid_t location, const std::vector<PartShape>& shapes, const char* description) {
+  const std::vector<std::uint8_t> codes = shapeCodes(shapes);
+  if (!writeDescribed(location, "shape", {codes.size()}, H5T_NATIVE_UINT8, codes.data(), "1",
+                      description))
+    return false;
+  Handle dataset(H5Dopen2(location, "shape", H5P_DEFAULT), H5Dclose);
+  return dataset.valid() && writeStrings(dataset.get(), "names", shapeNames());
+}
+
 // a whole dataset as T values; `dims` gets its shape. False when missing or unreadable
 template <class T>
 bool readDataset(hid_t location, const char* name, std::vector<T>& values,
@@ -145,7 +171,10 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
   ok = writeDescribed(group.get(), "half_extents", {parts, 3}, H5T_NATIVE_DOUBLE, half.data(), "m",
                       "half the box size along the part's own x, y, z axes") &&
        writeDescribed(group.get(), "parent", {parts}, H5T_NATIVE_INT32, parents.data(), "1",
-                      "index of the parent part; -1 for the root");
+                      "index of the parent part; -1 for the root") &&
+       writeShapes(group.get(), t.shape,
+                   "each part's shape; index into the names attribute (half_extents read as "
+                   "the shape reads its size)");
   if (!ok)
     return false;
 
@@ -191,6 +220,7 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
          writeDescribed(g, "orientation", {frames, held, 4}, H5T_NATIVE_DOUBLE,
                         held_orientation.data(), "1",
                         "world orientation of each object, unit quaternion (x, y, z, w)") &&
+         writeShapes(g, t.held_shape, "each object's shape; index into the names attribute") &&
          writeDescribed(g, "released", {frames, held}, H5T_NATIVE_UINT8, t.held_released.data(),
                         "1", "1 once the object has been let go");
 }
@@ -214,10 +244,12 @@ void TrajectoryRecorder::begin(const BodyPlan& plan, double time_step,
   for (const PartPlan& part : plan.parts) {
     fresh.half_extents.push_back(part.size * 0.5);
     fresh.parent.push_back(part.parent);
+    fresh.shape.push_back(part.shape);
   }
   for (const HeldObject& held : plan.held) {
     fresh.held_half_extents.push_back(held.size * 0.5);
     fresh.held_part.push_back(held.part);
+    fresh.held_shape.push_back(held.shape);
   }
   trajectory_ = std::move(fresh);
 }
@@ -254,9 +286,10 @@ std::uint64_t frameStrideFor(double frame_rate, double time_step) {
 void writeTrajectory(const std::string& path, const Trajectory& t) {
   // the arrays must agree before anything touches the disk
   const std::size_t frames = t.frameCount(), parts = t.partCount();
-  if (t.parent.size() != parts || t.step.size() != frames || t.phase.size() != frames ||
-      t.center_of_mass.size() != frames || t.poses.size() != frames * parts ||
-      t.held_part.size() != t.heldCount() || t.held_poses.size() != frames * t.heldCount() ||
+  if (t.parent.size() != parts || t.shape.size() != parts || t.held_shape.size() != t.heldCount() ||
+      t.step.size() != frames || t.phase.size() != frames || t.center_of_mass.size() != frames ||
+      t.poses.size() != frames * parts || t.held_part.size() != t.heldCount() ||
+      t.held_poses.size() != frames * t.heldCount() ||
       t.held_released.size() != frames * t.heldCount() ||
       (!t.light.empty() && t.light.size() != frames)) {
     throw Error(ExitCode::failure, path + ": inconsistent trajectory (" + std::to_string(frames) +
@@ -352,6 +385,24 @@ Trajectory readTrajectory(const std::string& path) {
   shape("part/half_extents", {parts, 3});
   need(readDataset(f, "part/parent", parents, dims), "part/parent");
   shape("part/parent", {parts});
+  // shapes (files of before have none: boxes)
+  auto readShapes = [&](const char* name, hsize_t count, std::vector<PartShape>& shapes) {
+    shapes.assign(count, PartShape::box);
+    if (H5Lexists(f, name, H5P_DEFAULT) <= 0)
+      return;
+    std::vector<std::uint8_t> codes;
+    need(readDataset(f, name, codes, dims), name);
+    if (dims != std::vector<hsize_t>{count})
+      fail(std::string("dataset /") + name + " has the wrong shape for " + std::to_string(count) +
+           " entries");
+    for (hsize_t k = 0; k < count; ++k) {
+      if (codes[k] >= kPartShapeKinds)
+        fail(std::string("dataset /") + name + ": value " + std::to_string(codes[k]) +
+             " at entry " + std::to_string(k) + " is not a shape");
+      shapes[k] = static_cast<PartShape>(codes[k]);
+    }
+  };
+  readShapes("part/shape", parts, t.shape);
   need(readDataset(f, "step", t.step, dims), "step");
   shape("step", {frames});
   need(readDataset(f, "phase", phases, dims), "phase");
@@ -411,6 +462,7 @@ Trajectory readTrajectory(const std::string& path) {
     t.held_half_extents.push_back({half[3 * k], half[3 * k + 1], half[3 * k + 2]});
     t.held_part.push_back(holders[k]);
   }
+  readShapes("held/shape", held, t.held_shape);
   t.held_poses = unflattenPoses(position, orientation, frames * held);
   return t;
 }

@@ -39,6 +39,7 @@ struct Trajectory {
   // the body (one entry per part, BodyPlan order)
   std::vector<Vec3> half_extents;  ///< half the box size along the part's own axes, m
   std::vector<int> parent;         ///< parent part index, -1 for the root
+  std::vector<PartShape> shape;    ///< each part's shape (half_extents as PartShape reads size)
 
   // the frames
   std::vector<double> time;          ///< simulated time of each frame, s
@@ -50,6 +51,7 @@ struct Trajectory {
   // objects held at birth (BodyPlan::held order: a catapult's projectile); none for most
   std::vector<Vec3> held_half_extents;      ///< half the box size along its own axes, m
   std::vector<int> held_part;               ///< the part that holds it at birth
+  std::vector<PartShape> held_shape;        ///< its shape
   std::vector<Transform> held_poses;        ///< frames x held world poses (frame-major)
   std::vector<std::uint8_t> held_released;  ///< frames x held: 1 once it has been let go
 

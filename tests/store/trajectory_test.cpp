@@ -40,6 +40,7 @@ Trajectory makeTrajectory() {
   t.genome_text = "cambrian-genome 1\nnode 0 size 1 1 1\n";
   t.half_extents = {{0.3, 0.15, 0.075}, {0.15, 0.05, 0.05}, {0.15, 0.05, 0.05}};
   t.parent = {-1, 0, 0};
+  t.shape = {PartShape::box, PartShape::capsule, PartShape::sphere};
   const EvalPhase phases[] = {EvalPhase::settle, EvalPhase::trial, EvalPhase::resettle,
                               EvalPhase::measure, EvalPhase::measure};
   for (int f = 0; f < 5; ++f) {
@@ -70,6 +71,8 @@ void expectSame(const Trajectory& a, const Trajectory& b) {
   EXPECT_EQ(a.genome_text, b.genome_text);
   EXPECT_EQ(a.half_extents, b.half_extents);
   EXPECT_EQ(a.parent, b.parent);
+  EXPECT_EQ(a.shape, b.shape);
+  EXPECT_EQ(a.held_shape, b.held_shape);
   EXPECT_EQ(a.time, b.time);
   EXPECT_EQ(a.step, b.step);
   EXPECT_EQ(a.phase, b.phase);
@@ -98,6 +101,7 @@ Trajectory makeThrowTrajectory() {
   t.task = "catapult";
   t.held_half_extents = {{0.1, 0.1, 0.05}};
   t.held_part = {0};
+  t.held_shape = {PartShape::cylinder};
   for (std::size_t f = 0; f < t.frameCount(); ++f) {
     Transform pose;
     pose.position = {1.5 * static_cast<double>(f), 0.25, 1.0 - 0.1 * static_cast<double>(f)};
@@ -362,6 +366,7 @@ TEST(TrajectoryRecorder, AHeldProjectileIsRecorded) {
   ASSERT_EQ(t.heldCount(), 1u);
   EXPECT_EQ(t.held_half_extents[0], (Vec3{0.05, 0.05, 0.05}));
   EXPECT_EQ(t.held_part[0], 0);
+  EXPECT_EQ(t.held_shape, std::vector<PartShape>{PartShape::box});
   ASSERT_EQ(t.held_poses.size(), t.frameCount());
   ASSERT_EQ(t.held_released.size(), t.frameCount());
   std::size_t first_free = t.frameCount();
@@ -428,6 +433,37 @@ TEST(TrajectoryRecorder, TheWaterAndTheMovingLightAreRecorded) {
   EXPECT_EQ(plain.trajectory().light.back(), (Vec3{10, 0, 0}));
   EXPECT_EQ(plain.trajectory().ground, "plane");
   EXPECT_EQ(plain.trajectory().viscosity, 0);
+}
+
+// each part's and held object's shape is recorded from the plan (no encoding grows other shapes
+// yet, so the plan is made by hand) and survives the file
+TEST(TrajectoryRecorder, ShapesAreRecorded) {
+  BodyPlan plan;
+  plan.parts.resize(3);
+  plan.parts[0].shape = PartShape::capsule;
+  plan.parts[1].shape = PartShape::sphere;
+  plan.parts[1].parent = 0;
+  plan.parts[2].parent = 0;
+  plan.held.resize(1);
+  plan.held[0].shape = PartShape::cylinder;
+  TrajectoryRecorder recorder(1);
+  recorder.begin(plan, 0.01, Environment{});
+  const std::vector<Transform> poses(3);
+  const std::vector<Transform> held_poses(1);
+  const std::vector<std::uint8_t> released(1, 0);
+  EvalFrame frame;
+  frame.poses = poses;
+  frame.held_poses = held_poses;
+  frame.held_released = released;
+  recorder.frame(frame);
+  const std::vector<PartShape> shapes = {PartShape::capsule, PartShape::sphere, PartShape::box};
+  EXPECT_EQ(recorder.trajectory().shape, shapes);
+  EXPECT_EQ(recorder.trajectory().held_shape, std::vector<PartShape>{PartShape::cylinder});
+  const std::string path = tempPath("shapes.h5");
+  writeTrajectory(path, recorder.trajectory());
+  const Trajectory read = readTrajectory(path);
+  EXPECT_EQ(read.shape, shapes);
+  EXPECT_EQ(read.held_shape, std::vector<PartShape>{PartShape::cylinder});
 }
 
 }  // namespace

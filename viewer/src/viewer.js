@@ -43,6 +43,20 @@ function gridTexture(fill, line, size) {
   return texture;
 }
 
+// the geometry of a part or object: `h` half its size as PartShape reads it (a capsule or
+// cylinder lies along x, h[0] half its length and h[1] its radius; a sphere's radius is h[0])
+function shapeGeometry(shape, h) {
+  if (shape === "sphere") return new THREE.SphereGeometry(h[0], 24, 16);
+  if (shape === "capsule" || shape === "cylinder") {
+    const geometry = shape === "capsule"
+      ? new THREE.CapsuleGeometry(h[1], Math.max(0, 2 * h[0] - 2 * h[1]), 8, 20)
+      : new THREE.CylinderGeometry(h[1], h[1], 2 * h[0], 24);
+    geometry.rotateZ(-Math.PI / 2);  // three.js builds them along y; ours lie along x
+    return geometry;
+  }
+  return new THREE.BoxGeometry(2 * h[0], 2 * h[1], 2 * h[2]);
+}
+
 // depth of every part in the body tree (parents precede children)
 function depths(parents) {
   const depth = [];
@@ -134,8 +148,9 @@ class Panel {
     // the body: one box per part, coloured by its depth in the tree
     const depth = depths(d.parts.parent);
     this.partMeshes = d.parts.half_extents.map((h, i) => {
+      const shape = (d.parts.shape || [])[i] || "box";
       const mesh = new THREE.Mesh(
-        new THREE.BoxGeometry(2 * h[0], 2 * h[1], 2 * h[2]),
+        shapeGeometry(shape, h),
         new THREE.MeshStandardMaterial({
           color: PART_COLOURS[depth[i] % PART_COLOURS.length],
           roughness: 0.6,
@@ -144,7 +159,7 @@ class Panel {
       mesh.castShadow = true;
       mesh.receiveShadow = true;
       mesh.add(new THREE.LineSegments(
-        new THREE.EdgesGeometry(mesh.geometry),
+        new THREE.EdgesGeometry(mesh.geometry, 30),
         new THREE.LineBasicMaterial({ color: 0x1a1a1a })
       ));
       this.scene.add(mesh);
@@ -155,7 +170,7 @@ class Panel {
     for (let k = 0; k < this.held; k++) {
       const h = d.held.half_extents[k];
       const mesh = new THREE.Mesh(
-        new THREE.BoxGeometry(2 * h[0], 2 * h[1], 2 * h[2]),
+        shapeGeometry((d.held.shape || [])[k] || "box", h),
         new THREE.MeshStandardMaterial({ color: HELD_COLOUR, roughness: 0.5 })
       );
       mesh.castShadow = true;
@@ -260,6 +275,7 @@ class Panel {
       label: this.data.label || "",
       parts: this.parts,
       meshes: this.partMeshes.length,
+      shapes: this.partMeshes.map((m) => m.geometry.type),
       held: this.held,
       light: Boolean(this.lightMesh),
       ground: this.data.ground,
