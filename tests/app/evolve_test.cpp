@@ -271,9 +271,11 @@ TEST(EvolveCommand, TheLiveLineIsShownWhenAskedForAndNeverInALog) {
   arguments.replace(arguments.find(" --quiet"), 8, "");
   auto live = runCambrian(arguments + " --run.progress live");
   ASSERT_EQ(live.exit_code, 0) << live.output;
-  EXPECT_NE(live.output.find(erase + "  gen 1/2  evaluated 1/6 (population 6)  eta "), std::string::npos)
+  EXPECT_NE(live.output.find(erase + "  gen 1/2  evaluated 1/6 (population 6)  eta "),
+            std::string::npos)
       << live.output;
-  EXPECT_NE(live.output.find(erase + "  gen 1/2  evaluated 6/6 (population 6)  eta "), std::string::npos)
+  EXPECT_NE(live.output.find(erase + "  gen 1/2  evaluated 6/6 (population 6)  eta "),
+            std::string::npos)
       << live.output;
   // each generation's line starts after the live line was wiped
   EXPECT_NE(live.output.find(erase + "gen 1/2  best "), std::string::npos) << live.output;
