@@ -126,7 +126,7 @@ def script_section(module, title, anchor, history, folder, extra=(), explain="")
     return section(title, anchor, body)
 
 
-def overview(history, attributes, generations, individuals, statuses, live, run_dir):
+def overview(attributes, generations, individuals, statuses, live, run_dir):
     """Settings and provenance, the run's size and cost, the statuses, the settings text."""
     rows = [("run directory", os.path.abspath(run_dir)),
             ("state", "going on (run.lock held): the page shows the generations written so far"
@@ -209,7 +209,7 @@ def report(arguments):
     live = run_is_live(arguments.run_dir)
     with tempfile.TemporaryDirectory(prefix="cambrian-report-") as folder:
         sections = [
-            overview(history, attributes, generations, individuals, statuses, live, arguments.run_dir),
+            overview(attributes, generations, individuals, statuses, live, arguments.run_dir),
             script_section("plot_fitness", "Fitness over generations", "fitness", history, folder,
                            explain="Best, mean and median of each generation, with the middle half shaded."),
             script_section("lineage", "Lineage of the best", "lineage", history, folder,

@@ -200,13 +200,6 @@ def non_negative_int(text):
     return value
 
 
-def positive_float(text):
-    value = float(text)
-    if not value > 0:
-        raise argparse.ArgumentTypeError(f"{text}: must be > 0")
-    return value
-
-
 def parse_arguments(argv):
     parser = argparse.ArgumentParser(
         description="Write one self-contained HTML page (three.js bundled, opens offline) that "
@@ -224,7 +217,7 @@ def parse_arguments(argv):
                         help="a panel's caption, in order (default: the generation, or none)")
     parser.add_argument("-o", "--output", default="view.html", help="page to write (default: view.html)")
     parser.add_argument("--title", default=None, help="page title (default: from the inputs)")
-    parser.add_argument("--frame-rate", type=positive_float, default=30.0,
+    parser.add_argument("--frame-rate", type=animate.positive_float, default=30.0,
                         help="frames per simulated second of replays on the fly (default: 30)")
     parser.add_argument("--cambrian", default=None,
                         help="the cambrian binary for replays (default: $CAMBRIAN_BINARY, the "
