@@ -17,6 +17,7 @@ always consistent.
 
 import os
 import signal
+import time
 
 import h5py
 import numpy as np
@@ -152,33 +153,65 @@ def _open_hdf5_here(path):
 class _FileSide:
     """The child's side of a History: the open file and the reads the parent asks for."""
 
+    # reopenings of a file opened plainly that a writer took up meanwhile
+    REOPENINGS = 5
+
     def __init__(self, path):
+        self.path = path
         self.file = _open_hdf5_here(path)
 
+    def _read(self, how):
+        """how(file)'s value. The writer closes the file between generations, so a reader may
+        open it plainly and then see the writer take it up again: the plain view then points
+        past the file's end ("addr overflow"). Such a read is made again on the file opened anew
+        (for SWMR reading while the writer holds it)."""
+        for attempt in range(self.REOPENINGS + 1):
+            try:
+                if self.file is None:
+                    raise OSError(f"{self.path}: cannot be opened again while its writer takes it up")
+                return how(self.file)
+            except OSError:
+                if (self.file is not None and self.file.swmr_mode) or attempt == self.REOPENINGS:
+                    raise
+                if self.file is not None:
+                    self.file.close()
+                    self.file = None
+                time.sleep(0.05 * (attempt + 1))
+                try:  # the writer may be between opening and taking the file up: both opens fail
+                    self.file = _open_hdf5_here(self.path)
+                except OSError:
+                    pass
+
     def attributes(self):
-        return {key: value for key, value in self.file.attrs.items()}
+        return self._read(lambda file: {key: value for key, value in file.attrs.items()})
 
     def table(self, group_name, skip):
         """Every column of a group, refreshed and cut to the rows all columns hold."""
-        group = self.file[group_name]
-        datasets = {name: group[name] for name in group if name not in skip}
-        for dataset in datasets.values():
-            dataset.refresh()
-        rows = min((d.shape[0] for d in datasets.values()), default=0)
-        return {name: d[:rows] for name, d in datasets.items()}
+        def read(file):
+            group = file[group_name]
+            datasets = {name: group[name] for name in group if name not in skip}
+            for dataset in datasets.values():
+                dataset.refresh()
+            rows = min((d.shape[0] for d in datasets.values()), default=0)
+            return {name: d[:rows] for name, d in datasets.items()}
+        return self._read(read)
 
     def length(self, name):
-        dataset = self.file[name]
-        dataset.refresh()
-        return dataset.shape[0]
+        def read(file):
+            dataset = file[name]
+            dataset.refresh()
+            return dataset.shape[0]
+        return self._read(read)
 
     def rows(self, name, start, stop):
-        dataset = self.file[name]
-        dataset.refresh()
-        return dataset[start:stop]
+        def read(file):
+            dataset = file[name]
+            dataset.refresh()
+            return dataset[start:stop]
+        return self._read(read)
 
     def attribute(self, name, key):
-        return self.file[name].attrs[key]
+        return self._read(lambda file: file[name].attrs[key])
 
 
 def _serve(path):

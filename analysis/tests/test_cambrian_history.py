@@ -238,3 +238,42 @@ def test_rows_of_an_append_cut_short_are_not_read(history_path, tmp_path):
         table = h.individuals()
         assert len(table["id"]) == POPULATION * GENERATIONS
         assert int(table["generation"].max()) == GENERATIONS - 1
+
+
+WRITER = """
+import sys, h5py
+path = sys.argv[1]
+sys.stdin.readline()
+with h5py.File(path, "r+", libver="latest", locking=False) as f:  # as the run's writer
+    f.swmr_mode = True
+    for group in ("generations", "individuals"):
+        for dataset in f[group].values():
+            rows = dataset.shape[0]
+            dataset.resize(rows + 4000, axis=0)
+            dataset[rows:] = dataset[rows - 1]
+    f.flush()
+    print("appended", flush=True)
+    sys.stdin.readline()
+"""
+
+
+def test_a_reader_that_opened_it_between_generations_reads_on_when_the_writer_goes_on(
+        history_path, tmp_path):
+    # the run's writer closes the file between generations: a reader opens it plainly then, and
+    # must go on reading when the writer takes it up again and appends
+    path = tmp_path / "between.h5"
+    path.write_bytes(open(history_path, "rb").read())
+    writer = subprocess.Popen(["/usr/bin/python3", "-c", WRITER, str(path)], stdin=subprocess.PIPE,
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        with ch.History(str(path)) as h:
+            writer.stdin.write("go\n")
+            writer.stdin.flush()
+            assert writer.stdout.readline() == "appended\n", writer.stderr.read()
+            generations = h.generations()
+            individuals = h.individuals()
+        assert len(generations["generation"]) >= GENERATIONS
+        assert len(individuals["id"]) >= POPULATION * GENERATIONS
+    finally:
+        writer.stdin.close()
+        writer.wait(timeout=60)

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <limits>
 #include <sstream>
+#include <thread>
 #include <type_traits>
 #include <unistd.h>
 #include <unordered_map>
@@ -688,6 +689,40 @@ struct HistoryReader::Impl {
   Handle file;
 };
 
+namespace {
+
+// reopenings of a file opened plainly that the writer took up meanwhile
+constexpr int kReopenings = 5;
+
+// read(file)'s value. The writer closes the file between generations, so a reader may open it
+// plainly and then see the writer take it up again: the plain view points past the file's end
+// ("addr overflow"). Such a read is made again on the file opened anew (for SWMR reading while
+// the writer holds it).
+template <class Read>
+auto readWhileWritten(const std::string& path, Handle& file, Read read) {
+  for (int attempt = 0;; ++attempt) {
+    try {
+      if (!file.valid())
+        throw InputError(path + ": HDF5 file cannot be opened again while its writer takes it up");
+      return read();
+    } catch (const InputError&) {
+      unsigned intent = 0;
+      bool swmr = file.valid() && H5Fget_intent(file.get(), &intent) >= 0 &&
+                  (intent & H5F_ACC_SWMR_READ) != 0;
+      if (swmr || attempt == kReopenings)
+        throw;
+      // the writer may be between opening and taking the file up: a plain open and a SWMR
+      // open then both fail for a moment
+      file.reset();
+      std::this_thread::sleep_for(std::chrono::milliseconds(50 * (attempt + 1)));
+      std::string problem;
+      file = openFile(path, "history", true, problem);
+    }
+  }
+}
+
+}  // namespace
+
 HistoryReader::HistoryReader(const std::string& path, HistoryReadMode mode)
     : path_(path), impl_(std::make_unique<Impl>()) {
   // libhdf5's faults on a damaged file end a child that reads all of it, not this process
@@ -741,160 +776,166 @@ HistoryReader::HistoryReader(const std::string& path, HistoryReadMode mode)
 HistoryReader::~HistoryReader() = default;
 
 std::vector<MeasureInfo> HistoryReader::measures() const {
-  QuietErrors quiet;
-  Handle dataset(H5Dopen2(impl_->file.get(), "/individuals/measures", H5P_DEFAULT), H5Dclose);
-  std::vector<std::string> names, units;
-  if (!dataset.valid() || !readStrings(dataset.get(), "names", names))
-    throw InputError(path_ + ": /individuals/measures or its names attribute is missing");
-  readStrings(dataset.get(), "units", units);
-  std::vector<MeasureInfo> measures;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    measures.push_back({names[i], i < units.size() ? units[i] : ""});
-  return measures;
+  return readWhileWritten(path_, impl_->file, [&] {
+    QuietErrors quiet;
+    Handle dataset(H5Dopen2(impl_->file.get(), "/individuals/measures", H5P_DEFAULT), H5Dclose);
+    std::vector<std::string> names, units;
+    if (!dataset.valid() || !readStrings(dataset.get(), "names", names))
+      throw InputError(path_ + ": /individuals/measures or its names attribute is missing");
+    readStrings(dataset.get(), "units", units);
+    std::vector<MeasureInfo> measures;
+    for (std::size_t i = 0; i < names.size(); ++i)
+      measures.push_back({names[i], i < units.size() ? units[i] : ""});
+    return measures;
+  });
 }
 
 std::vector<Individual> HistoryReader::individuals() const {
-  std::vector<MeasureInfo> measure_columns = measures();
-  QuietErrors quiet;
-  Handle group(H5Gopen2(impl_->file.get(), "individuals", H5P_DEFAULT), H5Gclose);
-  if (!group.valid())
-    throw InputError(path_ + ": cannot open group /individuals");
+  return readWhileWritten(path_, impl_->file, [&] {
+    std::vector<MeasureInfo> measure_columns = measures();
+    QuietErrors quiet;
+    Handle group(H5Gopen2(impl_->file.get(), "individuals", H5P_DEFAULT), H5Gclose);
+    if (!group.valid())
+      throw InputError(path_ + ": cannot open group /individuals");
 
-  // every column, then the rows all of them hold (a live file may be mid-append)
-  std::vector<std::uint64_t> generation, id, parent_a, parent_b, offset, size, steps;
-  std::vector<std::uint8_t> origin, status, bytes;
-  std::vector<double> fitness, measures, eval_seconds;
-  std::vector<std::int32_t> parts, joints, neurons, worker_rank;
-  hsize_t rows = std::numeric_limits<hsize_t>::max();
-  auto column = [&](const char* name, auto& values) {
-    hsize_t n = 0;
-    if (!readColumn(group.get(), name, values, n))
-      throw InputError(path_ + ": dataset /individuals/" + name + " missing or unreadable");
-    rows = std::min(rows, n);
-  };
-  column("generation", generation);
-  column("id", id);
-  column("parent_a", parent_a);
-  column("parent_b", parent_b);
-  column("operator", origin);
-  column("fitness", fitness);
-  column("status", status);
-  hsize_t width = measure_columns.size(), measure_rows = 0;
-  if (!readTable(group.get(), "measures", width, measures, measure_rows))
-    throw InputError(path_ +
-                     ": dataset /individuals/measures missing, unreadable or not one "
-                     "column per name in its names attribute");
-  rows = std::min(rows, measure_rows);
-  column("parts", parts);
-  column("joints", joints);
-  column("neurons", neurons);
-  column("steps", steps);
-  column("eval_seconds", eval_seconds);
-  column("worker_rank", worker_rank);
-  column("genome_offset", offset);
-  column("genome_size", size);
-  hsize_t byte_count = 0;
-  if (!readColumn(group.get(), "genome_bytes", bytes, byte_count))
-    throw InputError(path_ + ": dataset /individuals/genome_bytes missing or unreadable");
-  // only the rows of generations whose row is in (their individuals are written first)
-  std::uint64_t complete = 0;
-  for (const GenerationRecord& g : generations())
-    complete += g.stats.count;
-  rows = std::min<hsize_t>(rows, complete);
+    // every column, then the rows all of them hold (a live file may be mid-append)
+    std::vector<std::uint64_t> generation, id, parent_a, parent_b, offset, size, steps;
+    std::vector<std::uint8_t> origin, status, bytes;
+    std::vector<double> fitness, measures, eval_seconds;
+    std::vector<std::int32_t> parts, joints, neurons, worker_rank;
+    hsize_t rows = std::numeric_limits<hsize_t>::max();
+    auto column = [&](const char* name, auto& values) {
+      hsize_t n = 0;
+      if (!readColumn(group.get(), name, values, n))
+        throw InputError(path_ + ": dataset /individuals/" + name + " missing or unreadable");
+      rows = std::min(rows, n);
+    };
+    column("generation", generation);
+    column("id", id);
+    column("parent_a", parent_a);
+    column("parent_b", parent_b);
+    column("operator", origin);
+    column("fitness", fitness);
+    column("status", status);
+    hsize_t width = measure_columns.size(), measure_rows = 0;
+    if (!readTable(group.get(), "measures", width, measures, measure_rows))
+      throw InputError(path_ +
+                       ": dataset /individuals/measures missing, unreadable or not one "
+                       "column per name in its names attribute");
+    rows = std::min(rows, measure_rows);
+    column("parts", parts);
+    column("joints", joints);
+    column("neurons", neurons);
+    column("steps", steps);
+    column("eval_seconds", eval_seconds);
+    column("worker_rank", worker_rank);
+    column("genome_offset", offset);
+    column("genome_size", size);
+    hsize_t byte_count = 0;
+    if (!readColumn(group.get(), "genome_bytes", bytes, byte_count))
+      throw InputError(path_ + ": dataset /individuals/genome_bytes missing or unreadable");
+    // only the rows of generations whose row is in (their individuals are written first)
+    std::uint64_t complete = 0;
+    for (const GenerationRecord& g : generations())
+      complete += g.stats.count;
+    rows = std::min<hsize_t>(rows, complete);
 
-  // rows, checked against the byte stream and the enums
-  std::vector<Individual> result;
-  result.reserve(rows);
-  for (hsize_t i = 0; i < rows; ++i) {
-    if (offset[i] > byte_count || size[i] > byte_count - offset[i])
-      break;  // bytes of a row still being appended
-    if (origin[i] > static_cast<std::uint8_t>(Origin::graft) ||
-        status[i] > static_cast<std::uint8_t>(EvalStatus::failed))
-      throw InputError(path_ + ": /individuals row " + std::to_string(i) +
-                       ": operator or status out of range (corrupt history)");
-    Individual row;
-    row.generation = generation[i];
-    row.id = id[i];
-    for (std::uint64_t parent : {parent_a[i], parent_b[i]}) {
-      if (parent != kNoId)
-        row.parents.push_back(parent);
+    // rows, checked against the byte stream and the enums
+    std::vector<Individual> result;
+    result.reserve(rows);
+    for (hsize_t i = 0; i < rows; ++i) {
+      if (offset[i] > byte_count || size[i] > byte_count - offset[i])
+        break;  // bytes of a row still being appended
+      if (origin[i] > static_cast<std::uint8_t>(Origin::graft) ||
+          status[i] > static_cast<std::uint8_t>(EvalStatus::failed))
+        throw InputError(path_ + ": /individuals row " + std::to_string(i) +
+                         ": operator or status out of range (corrupt history)");
+      Individual row;
+      row.generation = generation[i];
+      row.id = id[i];
+      for (std::uint64_t parent : {parent_a[i], parent_b[i]}) {
+        if (parent != kNoId)
+          row.parents.push_back(parent);
+      }
+      row.origin = static_cast<Origin>(origin[i]);
+      Outcome& outcome = row.outcome;
+      outcome.fitness = fitness[i];
+      outcome.status = static_cast<EvalStatus>(status[i]);
+      for (std::size_t k = 0; k < measure_columns.size(); ++k) {
+        double value = measures[i * width + k];
+        if (!std::isnan(value))
+          outcome.measures.push_back({measure_columns[k].name, value});
+      }
+      outcome.parts = parts[i];
+      outcome.joints = joints[i];
+      outcome.neurons = neurons[i];
+      outcome.steps = steps[i];
+      row.evaluated = true;
+      row.eval_seconds = eval_seconds[i];
+      row.worker_rank = worker_rank[i];
+      try {
+        row.genome = decodeGenome(bytes.data() + offset[i], size[i]);
+      } catch (const Error& e) {
+        throw InputError(path_ + ": genome of individual " + std::to_string(row.id) + ": " +
+                         e.what());
+      }
+      result.push_back(std::move(row));
     }
-    row.origin = static_cast<Origin>(origin[i]);
-    Outcome& outcome = row.outcome;
-    outcome.fitness = fitness[i];
-    outcome.status = static_cast<EvalStatus>(status[i]);
-    for (std::size_t k = 0; k < measure_columns.size(); ++k) {
-      double value = measures[i * width + k];
-      if (!std::isnan(value))
-        outcome.measures.push_back({measure_columns[k].name, value});
-    }
-    outcome.parts = parts[i];
-    outcome.joints = joints[i];
-    outcome.neurons = neurons[i];
-    outcome.steps = steps[i];
-    row.evaluated = true;
-    row.eval_seconds = eval_seconds[i];
-    row.worker_rank = worker_rank[i];
-    try {
-      row.genome = decodeGenome(bytes.data() + offset[i], size[i]);
-    } catch (const Error& e) {
-      throw InputError(path_ + ": genome of individual " + std::to_string(row.id) + ": " +
-                       e.what());
-    }
-    result.push_back(std::move(row));
-  }
-  return result;
+    return result;
+  });
 }
 
 std::vector<GenerationRecord> HistoryReader::generations() const {
-  QuietErrors quiet;
-  Handle group(H5Gopen2(impl_->file.get(), "generations", H5P_DEFAULT), H5Gclose);
-  if (!group.valid())
-    throw InputError(path_ + ": cannot open group /generations");
+  return readWhileWritten(path_, impl_->file, [&] {
+    QuietErrors quiet;
+    Handle group(H5Gopen2(impl_->file.get(), "generations", H5P_DEFAULT), H5Gclose);
+    if (!group.valid())
+      throw InputError(path_ + ": cannot open group /generations");
 
-  // every column as doubles or integers, then the rows all of them hold
-  std::unordered_map<std::string, std::vector<double>> reals;
-  std::unordered_map<std::string, std::vector<std::uint64_t>> integers;
-  hsize_t rows = std::numeric_limits<hsize_t>::max();
-  std::vector<const Column*> absent;
-  for (const Column& c : generationColumns()) {
-    hsize_t n = 0;
-    bool real = c.type() == H5T_NATIVE_DOUBLE;
-    if (c.added_later && H5Lexists(group.get(), c.name, H5P_DEFAULT) <= 0) {
-      absent.push_back(&c);
-      continue;
+    // every column as doubles or integers, then the rows all of them hold
+    std::unordered_map<std::string, std::vector<double>> reals;
+    std::unordered_map<std::string, std::vector<std::uint64_t>> integers;
+    hsize_t rows = std::numeric_limits<hsize_t>::max();
+    std::vector<const Column*> absent;
+    for (const Column& c : generationColumns()) {
+      hsize_t n = 0;
+      bool real = c.type() == H5T_NATIVE_DOUBLE;
+      if (c.added_later && H5Lexists(group.get(), c.name, H5P_DEFAULT) <= 0) {
+        absent.push_back(&c);
+        continue;
+      }
+      bool ok = real ? readColumn(group.get(), c.name, reals[c.name], n)
+                     : readColumn(group.get(), c.name, integers[c.name], n);
+      if (!ok)
+        throw InputError(path_ + ": dataset /generations/" + c.name + " missing or unreadable");
+      rows = std::min(rows, n);
     }
-    bool ok = real ? readColumn(group.get(), c.name, reals[c.name], n)
-                   : readColumn(group.get(), c.name, integers[c.name], n);
-    if (!ok)
-      throw InputError(path_ + ": dataset /generations/" + c.name + " missing or unreadable");
-    rows = std::min(rows, n);
-  }
-  // columns an older file lacks read as zeros
-  for (const Column* c : absent) {
-    if (c->type() == H5T_NATIVE_DOUBLE)
-      reals[c->name].assign(rows, 0.0);
-    else
-      integers[c->name].assign(rows, 0);
-  }
-  std::vector<GenerationRecord> result;
-  result.reserve(rows);
-  for (hsize_t i = 0; i < rows; ++i) {
-    GenerationRecord g;
-    forEachGenerationField(g, [&](const char* name, auto& field) {
-      using T = std::decay_t<decltype(field)>;
-      if constexpr (std::is_floating_point_v<T>)
-        field = reals.at(name)[i];
+    // columns an older file lacks read as zeros
+    for (const Column* c : absent) {
+      if (c->type() == H5T_NATIVE_DOUBLE)
+        reals[c->name].assign(rows, 0.0);
       else
-        field = static_cast<T>(integers.at(name)[i]);
-    });
-    // a generation is in the history once its row is: an append cut short (killed, disk full)
-    // leaves rows the writer extended but never filled, which read as zeros
-    if (g.generation != i || !(g.unix_time > 0))
-      break;
-    result.push_back(g);
-  }
-  return result;
+        integers[c->name].assign(rows, 0);
+    }
+    std::vector<GenerationRecord> result;
+    result.reserve(rows);
+    for (hsize_t i = 0; i < rows; ++i) {
+      GenerationRecord g;
+      forEachGenerationField(g, [&](const char* name, auto& field) {
+        using T = std::decay_t<decltype(field)>;
+        if constexpr (std::is_floating_point_v<T>)
+          field = reals.at(name)[i];
+        else
+          field = static_cast<T>(integers.at(name)[i]);
+      });
+      // a generation is in the history once its row is: an append cut short (killed, disk full)
+      // leaves rows the writer extended but never filled, which read as zeros
+      if (g.generation != i || !(g.unix_time > 0))
+        break;
+      result.push_back(g);
+    }
+    return result;
+  });
 }
 
 }  // namespace cambrian

@@ -301,6 +301,60 @@ TEST(History, ReadableByAnotherProcessWhileTheWriterHoldsItOpen) {
   EXPECT_EQ(HistoryReader(path).generations().size(), 2u);
 }
 
+TEST(History, AReaderThatOpenedItBetweenGenerationsReadsOnWhenTheWriterGoesOn) {
+  // the reader opens the file while the writer has it closed (between generations), then the
+  // writer takes it up and appends: the reader's reads must still succeed
+  std::string path = tempPath("between.h5");
+  int to_parent[2], to_child[2];
+  ASSERT_EQ(pipe(to_parent), 0);
+  ASSERT_EQ(pipe(to_child), 0);
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    close(to_parent[0]);
+    close(to_child[1]);
+    char token = 'x';
+    try {
+      HistoryWriter writer(path, makeAttributes(), kMeasures);
+      writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
+      writer.completeLastGeneration(GenerationRecord{});
+      if (write(to_parent[1], &token, 1) != 1 || read(to_child[0], &token, 1) != 1)
+        _exit(4);
+      for (int g = 1; g < 4; ++g)
+        writer.appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
+      // the file stays held by the writer while the parent reads
+      if (write(to_parent[1], &token, 1) != 1 || read(to_child[0], &token, 1) != 1)
+        _exit(4);
+      writer.close();
+      _exit(0);
+    } catch (...) {
+      _exit(3);
+    }
+  }
+  close(to_parent[1]);
+  close(to_child[0]);
+  char token = 0;
+  ASSERT_EQ(read(to_parent[0], &token, 1), 1);
+  {
+    HistoryReader reader(path, HistoryReadMode::this_process_only);
+    ASSERT_EQ(write(to_child[1], &token, 1), 1);
+    ASSERT_EQ(read(to_parent[0], &token, 1), 1);
+    std::vector<Individual> rows;
+    std::vector<GenerationRecord> generations;
+    EXPECT_NO_THROW(rows = reader.individuals());
+    EXPECT_NO_THROW(generations = reader.generations());
+    EXPECT_EQ(rows.size(), 5 * generations.size());
+    EXPECT_GE(generations.size(), 1u);
+  }
+  ASSERT_EQ(write(to_child[1], &token, 1), 1);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  close(to_parent[0]);
+  close(to_child[1]);
+  EXPECT_EQ(HistoryReader(path).generations().size(), 4u);
+}
+
 // the output and exit code of a shell command
 std::pair<int, std::string> shell(const std::string& command) {
   std::string output;
