@@ -13,6 +13,7 @@ enum class RngPurpose : std::uint64_t {
   selection,           ///< parent selection
   variation,           ///< mutation, crossover, grafting
   evaluation,          ///< noise inside an evaluation (synthetic task, perturbations)
+  terrain,             ///< an environment's terrain (hills)
   test = 99,           ///< tests only
 };
 

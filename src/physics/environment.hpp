@@ -1,4 +1,4 @@
-// cambrian: environment kinds as plug-ins (plane, water; hills later), chosen by
+// cambrian: environment kinds as plug-ins (plane, water, hills), chosen by
 // environment.name; each builds the Environment (cambrian/environment.hpp) an evaluation runs
 // in. Tasks add the objects they need (Task::prepare) and read them back from the world.
 #pragma once

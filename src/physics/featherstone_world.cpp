@@ -1,6 +1,7 @@
 // cambrian: the Bullet Featherstone multibody world.
 #include "physics/featherstone_world.hpp"
 
+#include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
@@ -441,6 +442,8 @@ struct FeatherstoneObjects {
   DampedWorld world{&dispatcher, &broadphase, &solver, &configuration};
   btStaticPlaneShape ground_shape{btVector3(0, 0, 1), 0};
   btCollisionObject ground;
+  std::unique_ptr<btHeightfieldTerrainShape> terrain_shape;  // a heightfield ground (hills)
+  btCollisionObject terrain;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<PartCollider>> colliders;  // one per part, BodyPlan order
   std::unique_ptr<JointResponses> responses;             // shared by damping, limits and motors
@@ -454,6 +457,7 @@ struct FeatherstoneObjects {
   std::vector<std::unique_ptr<btMultiBodyFixedConstraint>> holds;  // per held object, null: let go
   bool self_contacts = true;  // parts touch each other (always at the birth check)
   bool has_ground = false;    // the ground plane is in the world
+  bool has_terrain = false;   // the heightfield is in the world
   mutable btAlignedObjectArray<btVector3> omega, velocity;  // linkVelocities()
   // correctMomentum's scratch: each body's mass, centre, velocity, spin and world inertia
   struct BodyState {
@@ -482,6 +486,8 @@ struct FeatherstoneObjects {
       world.removeCollisionObject(collider.get());
     if (body)
       world.removeMultiBody(body.get());
+    if (has_terrain)
+      world.removeCollisionObject(&terrain);
     if (has_ground)
       world.removeCollisionObject(&ground);
   }
@@ -566,7 +572,28 @@ void FeatherstoneWorld::build(double birth_height) {
   b.ground.setRestitution(environment_.ground.restitution);
   b.ground.setUserIndex(kGroundIndex);
   anchorFriction(b.ground);
-  if (environment_.ground.kind == Ground::Kind::plane) {
+  if (environment_.ground.kind == Ground::Kind::heightfield) {
+    // the terrain, and the plane under its lowest point to catch what leaves it
+    const Heightfield& field = environment_.ground.heightfield;
+    const auto [low, high] = std::minmax_element(field.heights->begin(), field.heights->end());
+    b.terrain_shape = std::make_unique<btHeightfieldTerrainShape>(
+        field.samples, field.samples, field.heights->data(), btScalar(*low), btScalar(*high), 2,
+        false);
+    b.terrain_shape->setLocalScaling(btVector3(field.spacing, field.spacing, 1));
+    b.terrain.setCollisionShape(b.terrain_shape.get());
+    // Bullet centres the shape on its bounds' middle height
+    b.terrain.setWorldTransform(
+        btTransform(btQuaternion::getIdentity(), btVector3(0, 0, (*low + *high) / 2)));
+    b.terrain.setFriction(environment_.ground.friction);
+    b.terrain.setRestitution(environment_.ground.restitution);
+    b.terrain.setUserIndex(kGroundIndex);
+    anchorFriction(b.terrain);
+    b.world.addCollisionObject(&b.terrain, btBroadphaseProxy::StaticFilter,
+                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    b.has_terrain = true;
+    b.ground.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, 0, *low)));
+  }
+  if (environment_.ground.kind != Ground::Kind::none) {
     b.world.addCollisionObject(&b.ground, btBroadphaseProxy::StaticFilter,
                                btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     b.has_ground = true;
@@ -586,6 +613,9 @@ void FeatherstoneWorld::build(double birth_height) {
   }
   const PartPlan& root = plan_.parts[0];
   Vec3 base_position = root.pose.position + Vec3{0, 0, birth_height - lowest};
+  // on hills: above the highest ground under the body
+  if (environment_.ground.kind == Ground::Kind::heightfield)
+    base_position.z += highestGroundUnder(plan_.parts);
 
   // the multibody: root part is the floating base
   b.body = std::make_unique<btMultiBody>(link_count, root.mass,
@@ -737,11 +767,38 @@ void FeatherstoneWorld::build(double birth_height) {
   }
 }
 
+double FeatherstoneWorld::highestGroundUnder(const std::vector<PartPlan>& parts) const {
+  double x_low = 0, x_high = 0, y_low = 0, y_high = 0;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const PartPlan& part = parts[i];
+    const Vec3 at = part.pose.position;
+    auto reach = [&](Vec3 direction) {
+      return shapeReach(part.shape, part.size, part.pose.rotation, direction);
+    };
+    const double xl = at.x - reach({-1, 0, 0}), xh = at.x + reach({1, 0, 0});
+    const double yl = at.y - reach({0, -1, 0}), yh = at.y + reach({0, 1, 0});
+    x_low = i == 0 ? xl : std::min(x_low, xl);
+    x_high = i == 0 ? xh : std::max(x_high, xh);
+    y_low = i == 0 ? yl : std::min(y_low, yl);
+    y_high = i == 0 ? yh : std::max(y_high, yh);
+  }
+  return environment_.ground.highestIn(x_low, x_high, y_low, y_high);
+}
+
 void FeatherstoneWorld::addObjects() {
   FeatherstoneObjects& b = *bullet_;
   for (std::size_t k = 0; k < environment_.objects.size(); ++k) {
     const FreeObject& object = environment_.objects[k];
-    const btTransform start(toBt(object.pose.rotation), toBt(object.pose.position));
+    Vec3 position = object.pose.position;
+    // on hills: as high above the ground under it as above z = 0
+    if (environment_.ground.kind == Ground::Kind::heightfield) {
+      PartPlan footprint;
+      footprint.shape = object.shape;
+      footprint.size = object.size;
+      footprint.pose = object.pose;
+      position.z += highestGroundUnder({footprint});
+    }
+    const btTransform start(toBt(object.pose.rotation), toBt(position));
     b.world.addRigidBody(
         &addRigidBody(object.shape, object.size, object.mass, object.material, start));
   }

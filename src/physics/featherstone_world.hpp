@@ -52,6 +52,8 @@ class FeatherstoneWorld : public World {
   void build(double birth_height);
   void addObjects();
   void addHeldObjects();
+  // at least the highest ground z under the parts' bounding boxes (hills)
+  double highestGroundUnder(const std::vector<PartPlan>& parts) const;
   btRigidBody& addRigidBody(PartShape shape, Vec3 size, double mass, const Material& material,
                             const btTransform& start);
   void release(std::span<const double> commands);

@@ -192,6 +192,20 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
                         "m", "world position of the light in each frame"))
       return false;
   }
+  // the terrain, with a heightfield ground
+  if (t.ground == "heightfield") {
+    what = "the /ground group";
+    Handle ground(H5Gcreate2(file, "ground", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    const hsize_t n = static_cast<hsize_t>(t.terrain_samples);
+    if (!ground.valid() ||
+        !writeString(ground.get(), "description",
+                     "the terrain: heights on a square grid centred on the origin, sample (row r, "
+                     "column c) at x = (c - (n - 1) / 2) spacing, y = (r - (n - 1) / 2) spacing") ||
+        !writeScalar(ground.get(), "spacing", t.terrain_spacing) ||
+        !writeDescribed(ground.get(), "heights", {n, n}, H5T_NATIVE_DOUBLE,
+                        t.terrain_heights.data(), "m", "z of each sample, row (y) x column (x)"))
+      return false;
+  }
   if (t.heldCount() == 0)
     return true;
 
@@ -236,7 +250,22 @@ void TrajectoryRecorder::begin(const BodyPlan& plan, double time_step,
                                const Environment& environment) {
   // a fresh recording of this body, in this environment
   Trajectory fresh;
-  fresh.ground = environment.ground.kind == Ground::Kind::none ? "none" : "plane";
+  switch (environment.ground.kind) {
+    case Ground::Kind::plane:
+      fresh.ground = "plane";
+      break;
+    case Ground::Kind::none:
+      fresh.ground = "none";
+      break;
+    case Ground::Kind::heightfield: {
+      const Heightfield& field = environment.ground.heightfield;
+      fresh.ground = "heightfield";
+      fresh.terrain_samples = field.samples;
+      fresh.terrain_spacing = field.spacing;
+      fresh.terrain_heights = *field.heights;
+      break;
+    }
+  }
   fresh.viscosity = environment.fluid.viscosity;
   fresh.frame_stride = stride_;
   fresh.time_step = time_step;
@@ -291,7 +320,11 @@ void writeTrajectory(const std::string& path, const Trajectory& t) {
       t.poses.size() != frames * parts || t.held_part.size() != t.heldCount() ||
       t.held_poses.size() != frames * t.heldCount() ||
       t.held_released.size() != frames * t.heldCount() ||
-      (!t.light.empty() && t.light.size() != frames)) {
+      (!t.light.empty() && t.light.size() != frames) ||
+      (t.ground == "heightfield") !=
+          (t.terrain_samples > 1 &&
+           t.terrain_heights.size() == static_cast<std::size_t>(t.terrain_samples) *
+                                           static_cast<std::size_t>(t.terrain_samples))) {
     throw Error(ExitCode::failure, path + ": inconsistent trajectory (" + std::to_string(frames) +
                                        " frames, " + std::to_string(parts) + " parts, " +
                                        std::to_string(t.poses.size()) + " poses)");
@@ -359,8 +392,8 @@ Trajectory readTrajectory(const std::string& path) {
   // the surroundings (files of before have neither: a plane, no fluid)
   if (H5Aexists(f, "ground") > 0 && !readString(f, "ground", t.ground))
     fail("root attribute 'ground' unreadable");
-  if (t.ground != "plane" && t.ground != "none")
-    fail("root attribute 'ground' is '" + t.ground + "', not plane or none");
+  if (t.ground != "plane" && t.ground != "none" && t.ground != "heightfield")
+    fail("root attribute 'ground' is '" + t.ground + "', not plane, none or heightfield");
   if (H5Aexists(f, "viscosity") > 0 && !readScalar(f, "viscosity", t.viscosity))
     fail("root attribute 'viscosity' unreadable");
 
@@ -436,6 +469,20 @@ Trajectory readTrajectory(const std::string& path) {
       fail("dataset /light/position has the wrong shape for " + std::to_string(frames) + " frames");
     for (hsize_t i = 0; i < frames; ++i)
       t.light.push_back({light[3 * i], light[3 * i + 1], light[3 * i + 2]});
+  }
+
+  // the terrain, with a heightfield ground
+  if (t.ground == "heightfield") {
+    need(H5Lexists(f, "ground", H5P_DEFAULT) > 0 &&
+             readDataset(f, "ground/heights", t.terrain_heights, dims),
+         "ground/heights");
+    if (dims.size() != 2 || dims[0] != dims[1] || dims[0] < 2)
+      fail("dataset /ground/heights is not a square grid of at least 2 x 2 samples");
+    t.terrain_samples = static_cast<int>(dims[0]);
+    Handle ground(H5Gopen2(f, "ground", H5P_DEFAULT), H5Gclose);
+    if (!ground.valid() || !readScalar(ground.get(), "spacing", t.terrain_spacing) ||
+        !(t.terrain_spacing > 0) || !std::isfinite(t.terrain_spacing))
+      fail("attribute /ground spacing missing, unreadable or not > 0");
   }
 
   // the held objects, when the file has any (files without /held hold none)

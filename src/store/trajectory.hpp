@@ -56,8 +56,13 @@ struct Trajectory {
   std::vector<std::uint8_t> held_released;  ///< frames x held: 1 once it has been let go
 
   // what surrounds the body (root attributes ground and viscosity; /light when recorded)
-  std::string ground = "plane";  ///< "plane" (a ground plane at z = 0) or "none" (water)
-  double viscosity = 0;          ///< the fluid's, N s / m^3; 0: none
+  /// "plane" (a ground plane at z = 0), "none" (water) or "heightfield" (hills: /ground)
+  std::string ground = "plane";
+  double viscosity = 0;  ///< the fluid's, N s / m^3; 0: none
+  /// with a heightfield: its samples per side, spacing (m) and heights (Heightfield's layout)
+  int terrain_samples = 0;
+  double terrain_spacing = 0;
+  std::vector<double> terrain_heights;
   /// the light's position per frame (what the photosensors point at); empty in files of before
   std::vector<Vec3> light;
 

@@ -1,15 +1,17 @@
 // Tests of the Featherstone world behind the World interface: every part shape rests where its
 // geometry says, prismatic joints slide, closed loops are refused with a clear status, free
 // objects of the environment fall and can be read back, materials bounce, held objects are
-// carried until their release effector fires, the registry.
+// carried until their release effector fires, hills are where their heights say, the registry.
 #include "physics/featherstone_world.hpp"
 
 #include "cambrian/error.hpp"
 
+#include "physics/hills_environment.hpp"
 #include "physics/simulation.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -136,6 +138,83 @@ TEST(FeatherstoneWorld, FreeObjectsFallAndAreReadBack) {
   EXPECT_EQ(world.objectPose(1).position, (Vec3{-1, 0, 0.5}));
   // the creature is not touched by either
   EXPECT_NEAR(world.partPosition(0).x, 0.0, 1e-3);
+}
+
+// lowest and highest ground in the square of half side `half` around (x, y)
+std::pair<double, double> groundAround(const Ground& ground, double x, double y, double half) {
+  double low = ground.heightAt(x, y), high = low;
+  for (int i = -4; i <= 4; ++i)
+    for (int j = -4; j <= 4; ++j) {
+      double h = ground.heightAt(x + half * i / 4, y + half * j / 4);
+      low = std::min(low, h);
+      high = std::max(high, h);
+    }
+  return {low, high};
+}
+
+// a small box born anywhere on the hills is born above them and comes to rest on the terrain
+// where Heightfield::heightAt says it is (Bullet's heightfield placed, scaled and triangulated
+// as the environment describes it)
+TEST(FeatherstoneWorld, ABoxComesToRestOnTheHillsWhereTheirHeightsSay) {
+  HillsEnvironment hills;
+  hills.terrain.height = 2;  // hills of about a metre
+  const Environment environment = hills.build(PhysicsSettings{});
+  const Ground& ground = environment.ground;
+  const Vec3 places[] = {{0, 0, 0}, {3, -7, 0}, {-6, 2.2, 0}, {8.3, 8.1, 0}, {-12, -1, 0}};
+  for (const Vec3& place : places) {
+    BodyPlan plan;
+    plan.parts.push_back(partOf(PartShape::box, {0.1, 0.1, 0.1}, place));
+    FeatherstoneWorld world(plan, environment, PhysicsSettings{}, 0.05);
+    ASSERT_EQ(world.birthStatus(), EvalStatus::ok);
+    const double under =
+        ground.highestIn(place.x - 0.05, place.x + 0.05, place.y - 0.05, place.y + 0.05);
+    EXPECT_NEAR(world.lowestPoint(), under + 0.05, 1e-9) << place.x << "," << place.y;
+    settle(world, 720);
+    const Vec3 at = world.partPosition(0);
+    const auto [low, high] = groundAround(ground, at.x, at.y, 0.08);
+    EXPECT_GE(world.lowestPoint(), low - 3e-3) << place.x << "," << place.y;
+    EXPECT_LE(world.lowestPoint(), high + 3e-3) << place.x << "," << place.y;
+    EXPECT_NE(world.contacts()[0], 0) << place.x << "," << place.y;  // it touches the ground
+  }
+  // the terrain is not flat where the boxes stood: the test tells places apart
+  EXPECT_GT(std::abs(ground.heightAt(3, -7) - ground.heightAt(-7, 3)), 0.05);
+}
+
+// a free object of the environment is placed as high above the hills as it would be above the
+// plane, and falls onto them
+TEST(FeatherstoneWorld, FreeObjectsStandOnTheHills) {
+  HillsEnvironment hills;
+  hills.terrain.height = 2;
+  Environment environment = hills.build(PhysicsSettings{});
+  FreeObject cube;
+  cube.size = {0.1, 0.1, 0.1};
+  cube.mass = 0.5;
+  cube.pose.position = {4, 5, 0.05};  // resting on a plane
+  environment.objects.push_back(cube);
+  BodyPlan plan;
+  plan.parts.push_back(partOf(PartShape::box, {0.2, 0.2, 0.2}));
+  FeatherstoneWorld world(plan, environment, PhysicsSettings{}, 0);
+  ASSERT_EQ(world.birthStatus(), EvalStatus::ok);
+  EXPECT_NEAR(world.objectPose(0).position.z,
+              0.05 + environment.ground.highestIn(3.95, 4.05, 4.95, 5.05), 1e-9);
+  settle(world, 720);
+  const Vec3 at = world.objectPose(0).position;
+  const auto [low, high] = groundAround(environment.ground, at.x, at.y, 0.08);
+  EXPECT_GE(at.z - 0.05, low - 0.02);
+  EXPECT_LE(at.z - 0.05, high + 3e-3);
+}
+
+// hills of height 0 are a plane: a box rests at half its height
+TEST(FeatherstoneWorld, FlatHillsAreAPlane) {
+  HillsEnvironment hills;
+  hills.terrain.height = 0;
+  BodyPlan plan;
+  plan.parts.push_back(partOf(PartShape::box, {0.4, 0.3, 0.2}, {1.3, -0.4, 0}));
+  FeatherstoneWorld world(plan, hills.build(PhysicsSettings{}), PhysicsSettings{}, 0.3);
+  ASSERT_EQ(world.birthStatus(), EvalStatus::ok);
+  settle(world, 720);
+  EXPECT_NEAR(world.partPosition(0).z, 0.1, 3e-3);
+  EXPECT_NEAR(world.partPosition(0).x, 1.3, 1e-3);
 }
 
 // a part's material sets its bounce: restitution 1 on a restitution-1 ground bounces back up

@@ -93,6 +93,9 @@ void expectSame(const Trajectory& a, const Trajectory& b) {
   EXPECT_EQ(a.ground, b.ground);
   EXPECT_EQ(a.viscosity, b.viscosity);
   EXPECT_EQ(a.light, b.light);
+  EXPECT_EQ(a.terrain_samples, b.terrain_samples);
+  EXPECT_EQ(a.terrain_spacing, b.terrain_spacing);
+  EXPECT_EQ(a.terrain_heights, b.terrain_heights);
 }
 
 // makeTrajectory with a projectile held by part 0 and let go after frame 2
@@ -175,6 +178,56 @@ TEST(Trajectory, SurroundingsRoundTrip) {
   EXPECT_EQ(thrownCode([&] { writeTrajectory(path, written); }),
             static_cast<int>(ExitCode::failure));
   EXPECT_TRUE(readTrajectory(path).light.empty());
+}
+
+// a heightfield ground's terrain survives bit for bit; a heightfield without a square grid of
+// heights, or heights without a heightfield, is refused before anything is written
+TEST(Trajectory, TerrainRoundTrip) {
+  std::string path = tempPath("terrain.h5");
+  Trajectory written = makeTrajectory();
+  written.ground = "heightfield";
+  written.terrain_samples = 3;
+  written.terrain_spacing = 0.3;
+  written.terrain_heights = {0, 0.1, 0.2, 1.0 / 3.0, 0, -0.5, 0.25, 0.125, 2};
+  writeTrajectory(path, written);
+  expectSame(readTrajectory(path), written);
+  Trajectory broken = written;
+  broken.terrain_heights.pop_back();
+  EXPECT_EQ(thrownCode([&] { writeTrajectory(path, broken); }),
+            static_cast<int>(ExitCode::failure));
+  broken = makeTrajectory();
+  broken.terrain_samples = 3;
+  broken.terrain_heights = written.terrain_heights;
+  EXPECT_EQ(thrownCode([&] { writeTrajectory(path, broken); }),
+            static_cast<int>(ExitCode::failure));
+  expectSame(readTrajectory(path), written);  // the file is as it was
+}
+
+// a creature on the hills: the recording holds the environment's terrain
+TEST(TrajectoryRecorder, TheHillsAreRecorded) {
+  CreatureSettings settings;
+  settings.set("task.evaluation_time", "1");
+  settings.set("environment.name", "hills");
+  settings.set("environment.hill_size", "8");
+  settings.check();
+  const Genotype genome = settings.encoding().fromText(
+      "cambrian-genome 2\nnode 0 size 0.5 0.3 0.2 density 1000 joint rigid limit 1 1 1 recursion "
+      "1\nend\n",
+      "test");
+  TrajectoryRecorder recorder(8);
+  ASSERT_EQ(evaluate(genome, settings, 0, &recorder).status, EvalStatus::ok);
+  const Trajectory& t = recorder.trajectory();
+  const Ground ground = settings.environment().ground;
+  EXPECT_EQ(t.ground, "heightfield");
+  EXPECT_EQ(t.terrain_samples, 17);
+  EXPECT_EQ(t.terrain_spacing, 0.5);
+  EXPECT_EQ(t.terrain_heights, *ground.heightfield.heights);
+  // the block rests on the terrain: its centre 0.1 m above the ground somewhere under it
+  const Vec3 centre = t.center_of_mass.back();
+  EXPECT_GT(centre.z, ground.heightAt(centre.x, centre.y));
+  EXPECT_LT(centre.z,
+            ground.highestIn(centre.x - 0.3, centre.x + 0.3, centre.y - 0.3, centre.y + 0.3) + 0.1 +
+                3e-3);
 }
 
 // writing over an existing file replaces it whole
