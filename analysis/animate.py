@@ -84,6 +84,13 @@ def load_trajectory(path):
             data["held_shape"] = _shape_names(file, "held/shape", len(data["held_half_extents"]))
             # the light (absent in files of before) and the surroundings (plane, no fluid then)
             data["light"] = np.asarray(file["light/position"][()]) if "light" in file else None
+            # a heightfield ground's terrain (hills): /ground
+            data["terrain"] = None
+            if "ground" in file and "heights" in file["ground"]:
+                data["terrain"] = {
+                    "heights": np.asarray(file["ground/heights"][()], dtype=float),
+                    "spacing": float(file["ground"].attrs["spacing"]),
+                }
     except OSError as error:
         raise TrajectoryError(f"{path}: not a readable HDF5 file ({error})") from error
     except KeyError as error:
@@ -101,6 +108,15 @@ def load_trajectory(path):
     }
     data["ground"] = str(data["attributes"].get("ground", "plane"))
     data["viscosity"] = float(data["attributes"].get("viscosity", 0.0))
+    terrain = data["terrain"]
+    if (data["ground"] == "heightfield") != (terrain is not None):
+        raise TrajectoryError(f"{path}: ground is {data['ground']!r} but /ground/heights is "
+                              f"{'present' if terrain is not None else 'missing'}")
+    if terrain is not None:
+        heights = terrain["heights"]
+        if heights.ndim != 2 or heights.shape[0] != heights.shape[1] or heights.shape[0] < 2 \
+                or not terrain["spacing"] > 0:
+            raise TrajectoryError(f"{path}: /ground/heights is not a square grid with a spacing > 0")
     data["path"] = path
     return data
 
@@ -142,14 +158,46 @@ def select_frames(count, stride=1, max_frames=None):
     return np.arange(0, count, stride)
 
 
-def ground_segments(center, radius, spacing):
-    """Grid lines on z = 0 around `center` (x, y), `radius` m to each side, on multiples of
-    `spacing` so the grid stays fixed in the world while the camera moves."""
+def terrain_height(terrain, x, y):
+    """The ground's z at points (x, y) (arrays) on a heightfield terrain, on the triangles Bullet
+    makes of each grid square (split from (c + 1, r) to (c, r + 1)); outside, the edge's."""
+    heights, spacing = terrain["heights"], terrain["spacing"]
+    n = heights.shape[0]
+    half = (n - 1) / 2
+    gx = np.clip(np.asarray(x, dtype=float) / spacing + half, 0, n - 1)
+    gy = np.clip(np.asarray(y, dtype=float) / spacing + half, 0, n - 1)
+    c = np.minimum(gx.astype(int), n - 2)
+    r = np.minimum(gy.astype(int), n - 2)
+    u, v = gx - c, gy - r
+    h00, h10, h01, h11 = heights[r, c], heights[r, c + 1], heights[r + 1, c], heights[r + 1, c + 1]
+    lower = h00 + u * (h10 - h00) + v * (h01 - h00)
+    upper = h11 + (1 - u) * (h01 - h11) + (1 - v) * (h10 - h11)
+    return np.where(u + v <= 1, lower, upper)
+
+
+def ground_segments(center, radius, spacing, terrain=None):
+    """Grid lines on the ground around `center` (x, y), `radius` m to each side, on multiples of
+    `spacing` so the grid stays fixed in the world while the camera moves: on z = 0, or over a
+    heightfield `terrain` in pieces of its own spacing."""
     x0, y0 = center
     xs = np.arange(math.floor((x0 - radius) / spacing), math.ceil((x0 + radius) / spacing) + 1) * spacing
     ys = np.arange(math.floor((y0 - radius) / spacing), math.ceil((y0 + radius) / spacing) + 1) * spacing
-    segments = [[(x, ys[0], 0), (x, ys[-1], 0)] for x in xs]
-    segments += [[(xs[0], y, 0), (xs[-1], y, 0)] for y in ys]
+    if terrain is None:
+        segments = [[(x, ys[0], 0), (x, ys[-1], 0)] for x in xs]
+        segments += [[(xs[0], y, 0), (xs[-1], y, 0)] for y in ys]
+        return segments
+    step = min(spacing, terrain["spacing"])
+    along_y = np.linspace(ys[0], ys[-1], max(2, int(math.ceil((ys[-1] - ys[0]) / step)) + 1))
+    along_x = np.linspace(xs[0], xs[-1], max(2, int(math.ceil((xs[-1] - xs[0]) / step)) + 1))
+    segments = []
+    for x in xs:
+        z = terrain_height(terrain, np.full(len(along_y), x), along_y)
+        points = np.column_stack([np.full(len(along_y), x), along_y, z])
+        segments += [[tuple(a), tuple(b)] for a, b in zip(points[:-1], points[1:])]
+    for y in ys:
+        z = terrain_height(terrain, along_x, np.full(len(along_x), y))
+        points = np.column_stack([along_x, np.full(len(along_x), y), z])
+        segments += [[tuple(a), tuple(b)] for a, b in zip(points[:-1], points[1:])]
     return segments
 
 
@@ -244,13 +292,16 @@ def render(trajectory, output, fps=None, size=(640, 480), stride=1, max_frames=N
                 )
             )
         cx, cy = com[index, 0], com[index, 1]
-        grid.set_segments(ground_segments((cx, cy), radius, spacing))
+        terrain = trajectory.get("terrain")
+        grid.set_segments(ground_segments((cx, cy), radius, spacing, terrain))
         path = com[indices[: k + 1]]
         path = path[(np.abs(path[:, 0] - cx) <= radius) & (np.abs(path[:, 1] - cy) <= radius)]
-        trail.set_data_3d(path[:, 0], path[:, 1], np.zeros(len(path)))
+        on = terrain_height(terrain, path[:, 0], path[:, 1]) if terrain is not None else np.zeros(len(path))
+        trail.set_data_3d(path[:, 0], path[:, 1], on)
+        base = float(terrain_height(terrain, cx, cy)) - radius / 4 if terrain is not None else 0
         axes.set_xlim(cx - radius, cx + radius)
         axes.set_ylim(cy - radius, cy + radius)
-        axes.set_zlim(0, radius)
+        axes.set_zlim(base, base + radius)
         axes.set_box_aspect((1, 1, 0.5), zoom=1.4)
         axes.set_title(frame_title(trajectory, index), fontsize=9)
         return boxes, held, grid, trail

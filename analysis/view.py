@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write one self-contained HTML page that shows creatures in the browser (three.js, bundled in
-the page: it opens offline, from disk): their parts, the ground or the water, a held projectile,
+the page: it opens offline, from disk): their parts, the ground (plane or hills) or the water, a held projectile,
 the light; play / pause / scrub, speed, orbit or follow camera, the phase and the fitness; several
 creatures side by side on one timeline.
 
@@ -81,7 +81,15 @@ def scene_of(trajectory, label=""):
         "orientation": _rounded(trajectory["orientation"], ORIENTATION_DECIMALS),
         "light": None if trajectory["light"] is None else _rounded(trajectory["light"], POSITION_DECIMALS),
         "held": None,
+        "terrain": None,
     }
+    terrain = trajectory.get("terrain")
+    if terrain is not None:
+        scene["terrain"] = {
+            "samples": int(terrain["heights"].shape[0]),
+            "spacing": float(terrain["spacing"]),
+            "heights": _rounded(terrain["heights"], POSITION_DECIMALS),
+        }
     if len(trajectory["held_half_extents"]):
         scene["held"] = {
             "half_extents": np.asarray(trajectory["held_half_extents"], dtype=float).tolist(),

@@ -10,6 +10,7 @@ import shutil
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -55,7 +56,11 @@ def trajectories(tmp_path_factory):
     swimmer = folder / "light.h5"
     cambrian("simulate", "--genome", block_genome, "--task.name", "follow_light", "--environment.name", "water",
              "--task.evaluation_time", 2, "--task.light_trials", 1, "--export", swimmer)
-    return {"folder": folder, "walker": walker, "catapult": catapult, "light": swimmer}
+    hills = folder / "hills.h5"
+    cambrian("simulate", "--genome", os.path.join(ROOT, "jobs", "creatures", "walker4.genome"),
+             "--task.evaluation_time", 2, "--environment.name", "hills", "--environment.hill_size", 16,
+             "--environment.hill_height", 1.5, "--export", hills)
+    return {"folder": folder, "walker": walker, "catapult": catapult, "light": swimmer, "hills": hills}
 
 
 def embedded(page_text):
@@ -140,6 +145,35 @@ def test_each_shape_is_drawn_as_itself(trajectories, tmp_path):
     status = browse(page, budget_ms=1500)
     assert status["panels"][0]["shapes"] == ["CapsuleGeometry", "SphereGeometry", "CylinderGeometry",
                                              "BoxGeometry", "BoxGeometry"]
+
+
+def test_hills_are_drawn_as_their_terrain(trajectories, tmp_path):
+    import animate
+
+    trajectory = animate.load_trajectory(str(trajectories["hills"]))
+    terrain = trajectory["terrain"]
+    heights = terrain["heights"]
+    n = heights.shape[0]
+    assert trajectory["ground"] == "heightfield" and n == 33 and terrain["spacing"] == 0.5
+    # the terrain's own samples, and the start at z = 0
+    half = (n - 1) / 2
+    rows, columns = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    at = animate.terrain_height(terrain, (columns - half) * 0.5, (rows - half) * 0.5)
+    assert np.array_equal(at, heights) and heights[n // 2, n // 2] == 0
+    assert np.ptp(heights) > 0.2  # hills, not a plane
+    # the walker stands on them: every part's centre above the ground under it
+    last = trajectory["position"][-1]
+    assert np.all(last[:, 2] > animate.terrain_height(terrain, last[:, 0], last[:, 1]))
+    page = tmp_path / "hills.html"
+    assert run_view(trajectories["hills"], "-o", page).returncode == 0
+    scene = embedded(page.read_text())["scenes"][0]
+    assert scene["ground"] == "heightfield" and scene["terrain"]["samples"] == n
+    assert np.allclose(scene["terrain"]["heights"], heights.ravel(), atol=1e-4)
+    shot = os.path.join(SCREENSHOTS or str(tmp_path), "viewer-hills.png")
+    status = browse(page, screenshot=shot, budget_ms=2500)
+    panel = status["panels"][0]
+    assert panel["ground"] == "heightfield" and panel["terrain_vertices"] == n * n
+    assert panel["frame"] > 0
 
 
 def test_a_history_replayed_on_the_fly(tmp_path):

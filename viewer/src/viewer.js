@@ -25,6 +25,52 @@ function frameAt(times, t) {
   return lo;
 }
 
+// the ground's z at (x, y): 0, or on a terrain's triangles as the physics makes them (each grid
+// square split from (c + 1, r) to (c, r + 1)); outside the terrain, its edge's
+function groundHeight(terrain, x, y) {
+  if (!terrain) return 0;
+  const n = terrain.samples, h = terrain.heights, half = (n - 1) / 2;
+  const gx = Math.min(Math.max(x / terrain.spacing + half, 0), n - 1);
+  const gy = Math.min(Math.max(y / terrain.spacing + half, 0), n - 1);
+  const c = Math.min(Math.floor(gx), n - 2), r = Math.min(Math.floor(gy), n - 2);
+  const u = gx - c, v = gy - r;
+  const at = (dc, dr) => h[(r + dr) * n + c + dc];
+  if (u + v <= 1) return at(0, 0) + u * (at(1, 0) - at(0, 0)) + v * (at(0, 1) - at(0, 0));
+  return at(1, 1) + (1 - u) * (at(0, 1) - at(1, 1)) + (1 - v) * (at(1, 0) - at(1, 1));
+}
+
+// a heightfield terrain as the physics triangulates it, with a 1 m grid on it
+function terrainMesh(terrain) {
+  const n = terrain.samples, spacing = terrain.spacing, half = (n - 1) / 2;
+  const positions = new Float32Array(n * n * 3);
+  const uvs = new Float32Array(n * n * 2);
+  for (let r = 0; r < n; r++) {
+    for (let c = 0; c < n; c++) {
+      const i = r * n + c, x = (c - half) * spacing, y = (r - half) * spacing;
+      positions.set([x, y, terrain.heights[i]], 3 * i);
+      uvs.set([x, y], 2 * i);  // metres: the texture's cell repeats every metre
+    }
+  }
+  const index = [];
+  for (let r = 0; r + 1 < n; r++) {
+    for (let c = 0; c + 1 < n; c++) {
+      const a = r * n + c, b = a + 1, d = a + n, e = d + 1;
+      index.push(a, b, d, b, e, d);  // counter-clockwise seen from above
+    }
+  }
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute("position", new THREE.BufferAttribute(positions, 3));
+  geometry.setAttribute("uv", new THREE.BufferAttribute(uvs, 2));
+  geometry.setIndex(index);
+  geometry.computeVertexNormals();
+  const mesh = new THREE.Mesh(
+    geometry,
+    new THREE.MeshStandardMaterial({ map: gridTexture("#b9c7a5", "#7f8d76", 1), roughness: 1 })
+  );
+  mesh.receiveShadow = true;
+  return mesh;
+}
+
 // a texture of one 1 m grid cell (`fill` with `line` edges), repeated over a `size` m plane
 function gridTexture(fill, line, size) {
   const canvas = document.createElement("canvas");
@@ -144,6 +190,13 @@ class Panel {
     ground.position.set(Math.round(d.com[0]), Math.round(d.com[1]), water ? d.com[2] - 2 : 0);
     ground.receiveShadow = !water;
     this.scene.add(ground);
+    // hills: their terrain, and the flat plane (where the physics has it) under its lowest point
+    this.terrainMesh = null;
+    if (d.terrain) {
+      this.terrainMesh = terrainMesh(d.terrain);
+      this.scene.add(this.terrainMesh);
+      ground.position.z = Math.min(...d.terrain.heights);
+    }
 
     // the body: one box per part, coloured by its depth in the tree
     const depth = depths(d.parts.parent);
@@ -190,7 +243,7 @@ class Panel {
       new THREE.RingGeometry(0.18, 0.22, 32),
       new THREE.MeshBasicMaterial({ color: 0x333333, side: THREE.DoubleSide })
     );
-    start.position.set(d.com[0], d.com[1], water ? d.com[2] : 0.002);
+    start.position.set(d.com[0], d.com[1], water ? d.com[2] : groundHeight(d.terrain, d.com[0], d.com[1]) + 0.01);
     this.scene.add(start);
 
     // the camera: looking at the start from behind and above, at the body's size
@@ -279,6 +332,7 @@ class Panel {
       held: this.held,
       light: Boolean(this.lightMesh),
       ground: this.data.ground,
+      terrain_vertices: this.terrainMesh ? this.terrainMesh.geometry.attributes.position.count : 0,
       frames: this.frames,
       frame: this.frame,
       phase: this.data.phase_names[this.data.phase[this.frame]],
