@@ -125,6 +125,8 @@ case $mode in
       "${common[@]}" --seed 13
     evolve catapult_aim_flat --config "$source_dir/jobs/experiments/chaumont/catapult-aim.ini" \
       --genome.projectile_mutation true "${common[@]}" --seed 14
+    evolve walk_hills --config "$source_dir/jobs/experiments/minemonics/walk-hills.ini" \
+      "${common[@]}" --seed 15
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do
@@ -133,6 +135,8 @@ case $mode in
     done
     simulate simulate_walker4_jump --genome "$creatures/walker4.genome" --task jump \
       --task.evaluation_time 2
+    simulate simulate_walker4_hills --genome "$creatures/walker4.genome" --task walk \
+      --environment.name hills --environment.hill_height 1.5 --task.evaluation_time 3
     simulate simulate_snake_torque --genome "$creatures/snake.genome" --task walk \
       --physics.actuation torque --physics.self_collision true --task.evaluation_time 2
     for seed in 1 2 3 4 5 6; do
