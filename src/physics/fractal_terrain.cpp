@@ -42,7 +42,8 @@ struct GradientTable {
     const int bx = static_cast<int>(static_cast<long long>(fx) & (kCells - 1));
     const int by = static_cast<int>(static_cast<long long>(fy) & (kCells - 1));
     auto corner = [&](int cx, int cy, double dx, double dy) {
-      const auto& g = gradient[permutation[permutation[(bx + cx) & (kCells - 1)] + ((by + cy) & (kCells - 1))]];
+      const auto& g =
+          gradient[permutation[permutation[(bx + cx) & (kCells - 1)] + ((by + cy) & (kCells - 1))]];
       return g[0] * dx + g[1] * dy;
     };
     auto curve = [](double t) { return t * t * (3 - 2 * t); };
@@ -76,7 +77,8 @@ std::vector<double> fractalHeights(const FractalTerrain& terrain, int samples, d
   std::vector<double> heights(static_cast<std::size_t>(samples) * samples);
   for (int r = 0; r < samples; ++r)
     for (int c = 0; c < samples; ++c)
-      heights[static_cast<std::size_t>(r) * samples + c] = at((c - half) * spacing, (r - half) * spacing);
+      heights[static_cast<std::size_t>(r) * samples + c] =
+          at((c - half) * spacing, (r - half) * spacing);
   const double origin = at(0, 0);
   for (double& h : heights)
     h -= origin;

@@ -15,7 +15,8 @@ void HillsEnvironment::declareSettings(SettingsSchema& s) {
   auto positive = [](const double& value) {
     return [&value] { return value > 0 && std::isfinite(value); };
   };
-  s.add("environment.hill_size", size, "hills: side of the square terrain, m (centred on the start)")
+  s.add("environment.hill_size", size,
+        "hills: side of the square terrain, m (centred on the start)")
       .require(positive(size), "must be > 0 and finite");
   s.add("environment.hill_spacing", spacing, "hills: m between the terrain's height samples")
       .require([this] { return spacing > 0 && std::isfinite(spacing) && size / spacing <= 4096; },
@@ -38,8 +39,9 @@ void HillsEnvironment::declareSettings(SettingsSchema& s) {
   s.add("environment.hill_octaves", terrain.octaves, "hills: noise octaves summed (Minemonics 10)")
       .require([this] { return terrain.octaves >= 1 && terrain.octaves <= 30; },
                "must be in 1..30");
-  s.addSeed("environment.hill_seed", terrain.seed,
-        "hills: the terrain's random seed (every creature of a run stands on the same terrain)");
+  s.addSeed(
+      "environment.hill_seed", terrain.seed,
+      "hills: the terrain's random seed (every creature of a run stands on the same terrain)");
 }
 
 int HillsEnvironment::samples() const {

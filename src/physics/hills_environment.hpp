@@ -21,8 +21,8 @@ class HillsEnvironment : public EnvironmentKind {
   void declareSettings(SettingsSchema& schema) override;
   Environment build(const PhysicsSettings& physics) const override;
 
-  double size = 64;       ///< m, side of the square terrain
-  double spacing = 0.5;   ///< m between samples
+  double size = 64;        ///< m, side of the square terrain
+  double spacing = 0.5;    ///< m between samples
   FractalTerrain terrain;  ///< the shape
 
   /// Samples per side: size / spacing rounded to an even number of squares, plus one.
