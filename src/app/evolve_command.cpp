@@ -6,6 +6,7 @@
 #include "cambrian/evaluate.hpp"
 
 #include "commands.hpp"
+#include "evolution/competitive_ranking.hpp"
 #include "evolution/evolution_settings.hpp"
 #include "options.hpp"
 #include "parallel/mpi_context.hpp"
@@ -15,6 +16,7 @@
 #include "run/stop_request.hpp"
 #include "tasks/task.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -128,6 +130,20 @@ void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
   s.run.run_only = schema.runOnlyKeys();
   s.run.measures = s.worker.creature.task().measures();
   s.run.repeatable = s.worker.creature.task().repeatable();
+  // a competitive ranking ranks measures the task reports
+  for (const std::string& text : s.evolution.ranking) {
+    const RankedMeasure ranked = parseRankedMeasure(text, "evolution.ranking");
+    const auto& measures = s.run.measures;
+    if (std::none_of(measures.begin(), measures.end(),
+                     [&](const MeasureInfo& m) { return m.name == ranked.measure; })) {
+      std::string names;
+      for (const MeasureInfo& m : measures)
+        names += (names.empty() ? "" : ", ") + m.name;
+      throw ConfigError("evolution.ranking = " + text + ": task " +
+                        s.worker.creature.task().name() + " has no measure '" + ranked.measure +
+                        "' (its measures: " + names + ")");
+    }
+  }
 
   // seed genomes (rank 0 only), checked against the encoding's limits
   if (read_seeds) {

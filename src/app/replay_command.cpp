@@ -33,6 +33,22 @@ namespace {
 // the sections of a history's config_text that decide how a creature is evaluated
 const std::set<std::string> kCreatureSections = {"environment", "genome", "physics", "task"};
 
+// whether a history's fitness is a competitive ranking within each generation
+// (evolution.ranking): a lone replay cannot give it back, only the measures it was ranked by
+bool rankedRun(const HistoryReader& history) {
+  try {
+    for (const IniEntry& entry :
+         parseIni(history.attributes().config_text, history.path() + ": config_text")) {
+      if (entry.key == "evolution.ranking" &&
+          entry.value.find_first_not_of(" \t") != std::string::npos)
+        return true;
+    }
+  } catch (const ConfigError&) {
+    // creatureSettingsOf names a bad config_text
+  }
+  return false;
+}
+
 // the creature settings of a history: its stored creature sections read with the definitions
 // `cambrian evolve` uses; other sections are ignored, unknown creature keys are errors (a
 // history of another cambrian version)
@@ -275,7 +291,16 @@ bool compareOutcomes(const HistoryReader& history, const Individual& row, const 
   bool match = replayed.status == stored.status;
   std::printf("%-14s %-24s %s%s\n", "status", statusName(stored.status),
               statusName(replayed.status), match || !compare ? "" : "  DIFFERENT");
-  match = compareLine("fitness", row.fitness(), replayed.fitness, compare) && match;
+  if (rankedRun(history)) {
+    // ranked within its generation (evolution.ranking): shown, not compared
+    std::printf(
+        "%-14s %-24.17g %.17g  (stored: its rank points in generation %llu, "
+        "evolution.ranking; not compared)\n",
+        "fitness", row.fitness(), replayed.fitness,
+        static_cast<unsigned long long>(row.generation));
+  } else {
+    match = compareLine("fitness", row.fitness(), replayed.fitness, compare) && match;
+  }
   // every measure either side has, by name: the history's columns first
   std::vector<std::string> names;
   for (const MeasureInfo& measure : history.measures())

@@ -4,6 +4,7 @@
 #include "cambrian/error.hpp"
 
 #include "core/settings.hpp"
+#include "evolution/competitive_ranking.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -86,6 +87,13 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
         "genome files the first generation starts from (repeat the key or separate by spaces)")
       .require([&e] { return static_cast<int>(e.seed_genomes.size()) <= e.population; },
                "more seed genomes than the population");
+  s.add("evolution.ranking", e.ranking,
+        "competitive ranking (Minemonics): measures NAME[:WEIGHT[:higher|lower]]; the fitness "
+        "becomes the weighted count of individuals each one beats on each (empty: the task's)");
+  s.addCheck([&e] {
+    for (const std::string& text : e.ranking)
+      parseRankedMeasure(text, "evolution.ranking");
+  });
   s.addSeed("run.seed", e.seed, "run seed, 0..2^64-1 (same seed, same run)");
 
   // the rule across keys: the offspring shares add up

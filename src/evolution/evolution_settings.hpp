@@ -44,7 +44,10 @@ struct EvolutionSettings {
   double post_crossover_mutation_rate = 0.05;  ///< per-parameter rate of that mutation
   SelectionSettings selection;
   std::vector<std::string> seed_genomes;  ///< genome files the first generation starts from
-  std::uint64_t seed = 1;                 ///< run seed: keys every random stream of the run
+  /// Minemonics' competitive ranking: measures as NAME[:WEIGHT[:higher|lower]]; when given, a
+  /// generation's fitness is each individual's weighted rank points (competitive_ranking.hpp)
+  std::vector<std::string> ranking;
+  std::uint64_t seed = 1;  ///< run seed: keys every random stream of the run
 
   /// Declares the [evolution] keys (and run.seed), bound to this object, with their ranges;
   /// evolution.generations is run-only (a resumed run may extend a finished one).

@@ -741,6 +741,7 @@ void FeatherstoneWorld::build(double birth_height) {
   // collider transforms from the zero pose
   body.updateCollisionObjectWorldTransforms(b.world_to_local, b.local_origin);
   contact_.assign(part_count, 0);
+  ground_contact_.assign(part_count, 0);
 
   // the environment's free objects, after the creature, then what the creature holds
   addObjects();
@@ -940,6 +941,27 @@ const std::vector<std::uint8_t>& FeatherstoneWorld::contacts() {
     }
   }
   return contact_;
+}
+
+const std::vector<std::uint8_t>& FeatherstoneWorld::groundContacts() {
+  // every touching point between a part and the ground (plane or terrain)
+  std::fill(ground_contact_.begin(), ground_contact_.end(), 0);
+  btDispatcher* dispatcher = bullet_->world.getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    const int a = manifold->getBody0()->getUserIndex();
+    const int b = manifold->getBody1()->getUserIndex();
+    const int part = a == kGroundIndex ? b : b == kGroundIndex ? a : -1;
+    if (part < 0)
+      continue;
+    for (int c = 0; c < manifold->getNumContacts(); ++c) {
+      if (manifold->getContactPoint(c).getDistance() <= 0.001) {
+        ground_contact_[part] = 1;
+        break;
+      }
+    }
+  }
+  return ground_contact_;
 }
 
 double FeatherstoneWorld::jointPosition(int part, int dof) const {

@@ -40,6 +40,7 @@ class FeatherstoneWorld : public World {
   Transform partPose(int part) const override;
   double jointPosition(int part, int dof) const override;
   const std::vector<std::uint8_t>& contacts() override;
+  const std::vector<std::uint8_t>& groundContacts() override;
   Vec3 directionInPart(int part, Vec3 point) const override;
   double lowestPoint() const override;
   Transform objectPose(int object) const override;
@@ -78,6 +79,7 @@ class FeatherstoneWorld : public World {
   std::vector<std::array<int, 3>> dof_link_;
   std::vector<double> max_torque_;
   std::vector<std::uint8_t> contact_;
+  std::vector<std::uint8_t> ground_contact_;  // groundContacts()
   std::vector<int> part_link_;          // per part: the Bullet link carrying it (-1: the base)
   std::vector<DragCoefficients> drag_;  // per part, then per object and held object: in a fluid
   std::size_t held_first_ = 0;          // the first held object's index among the rigid bodies

@@ -57,6 +57,10 @@ class Simulation {
   void heldPoses(std::vector<Transform>& poses, std::vector<std::uint8_t>& released) const;
   /// The body plan.
   const BodyPlan& plan() const { return plan_; }
+  /// Per part, 1 when it touches the ground after the last step (juries that count contacts).
+  const std::vector<std::uint8_t>& groundContacts() const { return world_->groundContacts(); }
+  /// The environment the creature lives in.
+  const Environment& environment() const { return environment_; }
   /// The world (for tasks that read the environment's objects).
   const World& world() const { return *world_; }
   /// Where the light the photosensors point at is now (the environment's at first), world, m.

@@ -47,6 +47,8 @@ class World {
   /// (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z, the face a contact point lies nearest to); 0 when
   /// nothing touches it.
   virtual const std::vector<std::uint8_t>& contacts() = 0;
+  /// Per part, 1 when it touches the ground (plane or terrain) after the last step, else 0.
+  virtual const std::vector<std::uint8_t>& groundContacts() = 0;
   /// The unit direction from part `part` towards the world point `point`, in the part's frame.
   virtual Vec3 directionInPart(int part, Vec3 point) const = 0;
   /// Height of the creature's lowest point above z = 0, m.

@@ -8,6 +8,7 @@
 #include "core/cpu_time.hpp"
 #include "core/test_kill.hpp"
 #include "evolution/breeder.hpp"
+#include "evolution/competitive_ranking.hpp"
 #include "evolution/outcome_reuse.hpp"
 #include "evolution/statistics.hpp"
 #include "physics/physics_settings.hpp"
@@ -86,6 +87,8 @@ class EvolutionRun {
         breeder_(settings, encoding),
         total_(static_cast<std::uint64_t>(std::max(settings.generations, 0))) {
     setTestKillPoint(run.test_kill_at);
+    for (const std::string& text : settings.ranking)
+      ranking_.push_back(parseRankedMeasure(text, "evolution.ranking"));
     if (run.viable)
       breeder_.setViabilityCheck(run.viable);
   }
@@ -372,6 +375,9 @@ class EvolutionRun {
       clearLiveLine();
     }
     copySiblingOutcomes(population, reuse);
+    // Minemonics' competitive ranking: the fitness is the individual's place in its generation
+    if (!ranking_.empty())
+      rankCompetitively(population.individuals, ranking_);
 
     // summarise in id order (the times so far; closed when the next generation starts)
     GenerationRecord record;
@@ -455,6 +461,7 @@ class EvolutionRun {
   const RunSettings& run_;
   std::ostream& out_;
   Breeder breeder_;
+  std::vector<RankedMeasure> ranking_;  // evolution.ranking, parsed (empty: the task's fitness)
   const std::uint64_t total_;
   double cpu_start_ = processCpuSeconds();
   Clock::time_point run_start_ = Clock::now();

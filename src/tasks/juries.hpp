@@ -39,13 +39,16 @@ Vec3 trackedPosition(const Simulation& simulation, TrackedPoint point);
 /// "distance": horizontal displacement of the tracked point over the measured phase, m.
 class DistanceJury : public Jury {
  public:
-  explicit DistanceJury(TrackedPoint point = TrackedPoint::centre_of_mass) : point_(point) {}
-  const char* name() const override { return "distance"; }
+  explicit DistanceJury(TrackedPoint point = TrackedPoint::centre_of_mass,
+                        const char* name = "distance")
+      : point_(point), name_(name) {}
+  const char* name() const override { return name_; }
   void begin(const Simulation& simulation) override;
   double value(const Simulation& simulation) const override;
 
  private:
   TrackedPoint point_;
+  const char* name_;
   Vec3 start_;
 };
 

@@ -12,10 +12,12 @@ const Task& syntheticTask();    // tasks/synthetic.cpp
 const Task& swimTask();         // tasks/swim.cpp
 const Task& followLightTask();  // tasks/follow_light.cpp
 const Task& catapultTask();     // tasks/catapult.cpp
+const Task& juriesTask();       // tasks/juries_task.cpp
 
 const std::vector<const Task*>& tasks() {
   static const std::vector<const Task*> registered = {
-      &walkTask(), &jumpTask(), &syntheticTask(), &swimTask(), &followLightTask(), &catapultTask(),
+      &walkTask(),        &jumpTask(),     &syntheticTask(), &swimTask(),
+      &followLightTask(), &catapultTask(), &juriesTask(),
   };
   return registered;
 }

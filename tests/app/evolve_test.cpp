@@ -297,6 +297,52 @@ TEST(EvolveCommand, TheLiveLineIsShownWhenAskedForAndNeverInALog) {
   EXPECT_NE(bad.output.find("run.progress"), std::string::npos) << bad.output;
 }
 
+// evolution.ranking: every stored fitness is its individual's rank points among its generation
+// on the juries named (recounted here from the stored measures, elites included), and the
+// replay of a ranked creature compares its measures, not its fitness
+TEST(EvolveCommand, ARankedRunStoresEachIndividualsRankPoints) {
+  std::string dir = freshDir("ranked");
+  auto run = runCambrian(
+      "evolve --task.name juries --task.evaluation_time 1 --evolution.population 8 "
+      "--evolution.generations 3 --evolution.ranking average_velocity:2:higher "
+      "--evolution.ranking ground_contact_ratio:0.5:lower --seed 5 --quiet --out " +
+      dir);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  HistoryReader reader(dir + "/history.h5");
+  const std::vector<Individual> rows = reader.individuals();
+  ASSERT_EQ(rows.size(), 24u);
+  bool some_points = false;
+  for (const Individual& row : rows) {
+    if (row.outcome.status != EvalStatus::ok) {
+      EXPECT_EQ(row.fitness(), kWorstFitness);
+      continue;
+    }
+    double points = 0;
+    for (const Individual& other : rows) {
+      if (other.generation != row.generation || other.outcome.status != EvalStatus::ok)
+        continue;
+      points +=
+          2 * (other.outcome.measure("average_velocity") < row.outcome.measure("average_velocity"));
+      points += 0.5 * (other.outcome.measure("ground_contact_ratio") >
+                       row.outcome.measure("ground_contact_ratio"));
+    }
+    EXPECT_EQ(row.fitness(), points) << "individual " << row.id;
+    some_points = some_points || points > 0;
+  }
+  EXPECT_TRUE(some_points);
+  auto replay = runCambrian("replay --history " + dir + "/history.h5 --best");
+  EXPECT_EQ(replay.exit_code, 0) << replay.output;
+  EXPECT_NE(replay.output.find("evolution.ranking; not compared"), std::string::npos)
+      << replay.output;
+  // a measure the task does not report is refused, naming the key and the task's measures
+  auto bad = runCambrian("evolve --task.name walk --evolution.ranking speed --quiet --out " +
+                         freshDir("ranked_bad"));
+  EXPECT_EQ(bad.exit_code, 3) << bad.output;
+  EXPECT_NE(bad.output.find("evolution.ranking = speed: task walk has no measure 'speed'"),
+            std::string::npos)
+      << bad.output;
+}
+
 TEST(EvolveCommand, HelpShowsDefaultsAsWritten) {
   auto help = runCambrian("evolve --help");
   EXPECT_EQ(help.exit_code, 0);

@@ -127,6 +127,8 @@ case $mode in
       --genome.projectile_mutation true "${common[@]}" --seed 14
     evolve walk_hills --config "$source_dir/jobs/experiments/minemonics/walk-hills.ini" \
       "${common[@]}" --seed 15
+    evolve juries_ranked --config "$source_dir/jobs/experiments/minemonics/juries.ini" \
+      "${common[@]}" --seed 16
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do

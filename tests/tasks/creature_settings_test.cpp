@@ -58,7 +58,7 @@ TEST(CreatureSettings, IniTextHoldsEveryCreatureSection) {
   CreatureSettings settings;
   std::string text = settings.iniText();
   for (const char* line :
-       {"[environment]\nname = plane\n",
+       {"[environment]\nhill_alpha = 3.3\n", "\nname = plane\nnet_gravity = 0\n",
         "[genome]\ncatapult = false\ncontact_sensors = part\nencoding = directed_graph\n",
         "world = featherstone\n", "name = walk\n", "max_weight = 5\n"})
     EXPECT_NE(text.find(line), std::string::npos) << line;
