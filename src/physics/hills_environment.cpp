@@ -66,6 +66,8 @@ Environment HillsEnvironment::build(const PhysicsSettings& physics) const {
   environment.ground.heightfield.samples = n;
   environment.ground.heightfield.spacing = spacing;
   environment.ground.heightfield.heights = made_->heights;
+  // the light 10 m ahead, on the ground there as on the plane
+  environment.light = {10, 0, environment.ground.heightAt(10, 0)};
   return environment;
 }
 

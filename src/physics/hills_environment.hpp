@@ -13,7 +13,7 @@ namespace cambrian {
 
 /// Hills: environment.hill_size x hill_size m of fractal terrain (FractalTerrain) sampled every
 /// hill_spacing m, centred on the start, the start at z = 0; physics.ground_friction and
-/// physics.restitution; the light 10 m along +x.
+/// physics.restitution; the light 10 m along +x, on the ground there.
 class HillsEnvironment : public EnvironmentKind {
  public:
   std::unique_ptr<EnvironmentKind> clone() const override;

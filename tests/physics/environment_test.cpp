@@ -62,6 +62,7 @@ TEST(Environment, HillsAreAGridOfHeightsAroundTheStart) {
   EXPECT_EQ(ground.heightfield.size(), 10);
   ASSERT_EQ(ground.heightfield.heights->size(), 21u * 21u);
   EXPECT_EQ(ground.heightAt(0, 0), 0.0);
+  EXPECT_EQ(environment.light, (Vec3{10, 0, ground.heightAt(10, 0)}));  // on the ground there
   EXPECT_EQ(hills.build(physics).ground.heightfield.heights, ground.heightfield.heights);
   // not flat, and another seed is another terrain
   double lowest = 0, highest = 0;

@@ -44,11 +44,17 @@ function terrainMesh(terrain) {
   const n = terrain.samples, spacing = terrain.spacing, half = (n - 1) / 2;
   const positions = new Float32Array(n * n * 3);
   const uvs = new Float32Array(n * n * 2);
+  const colours = new Float32Array(n * n * 3);
+  const low = Math.min(...terrain.heights), high = Math.max(...terrain.heights);
+  const valley = new THREE.Color(0x6f8f5a), top = new THREE.Color(0xe8e2c4), tint = new THREE.Color();
   for (let r = 0; r < n; r++) {
     for (let c = 0; c < n; c++) {
       const i = r * n + c, x = (c - half) * spacing, y = (r - half) * spacing;
       positions.set([x, y, terrain.heights[i]], 3 * i);
       uvs.set([x, y], 2 * i);  // metres: the texture's cell repeats every metre
+      // valleys darker, tops lighter: the hills read at a glance
+      tint.copy(valley).lerp(top, high > low ? (terrain.heights[i] - low) / (high - low) : 0.5);
+      colours.set([tint.r, tint.g, tint.b], 3 * i);
     }
   }
   const index = [];
@@ -61,11 +67,16 @@ function terrainMesh(terrain) {
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute("position", new THREE.BufferAttribute(positions, 3));
   geometry.setAttribute("uv", new THREE.BufferAttribute(uvs, 2));
+  geometry.setAttribute("color", new THREE.BufferAttribute(colours, 3));
   geometry.setIndex(index);
   geometry.computeVertexNormals();
   const mesh = new THREE.Mesh(
     geometry,
-    new THREE.MeshStandardMaterial({ map: gridTexture("#b9c7a5", "#7f8d76", 1), roughness: 1 })
+    new THREE.MeshStandardMaterial({
+      map: gridTexture("#ffffff", "#9aa39a", 1),
+      vertexColors: true,
+      roughness: 1,
+    })
   );
   mesh.receiveShadow = true;
   return mesh;
