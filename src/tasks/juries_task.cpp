@@ -23,10 +23,10 @@ class JuriesTask : public Task {
     return "Minemonics' juries: velocities, heights, ground contacts (fitness: task.fitness_jury)";
   }
   std::vector<MeasureInfo> measures() const override {
-    return {{"average_velocity", "1/s"},      {"integral_average_velocity", "1/s"},
-            {"horizontal_distance", "m"},     {"maximum_height", "m"},
-            {"average_height", "1"},          {"ground_contact_quantity", "1"},
-            {"ground_contact_ratio", "1"},    {"time_on_ground", "s"}};
+    return {{"average_velocity", "1/s"},   {"integral_average_velocity", "1/s"},
+            {"horizontal_distance", "m"},  {"maximum_height", "m"},
+            {"average_height", "1"},       {"ground_contact_quantity", "1"},
+            {"ground_contact_ratio", "1"}, {"time_on_ground", "s"}};
   }
 
   void declareSettings(SettingsSchema& s) override {
@@ -50,17 +50,15 @@ class JuriesTask : public Task {
     AverageHeightJury average_height;
     GroundContactJury contact_quantity(false), contact_ratio(true);
     TimeOnGroundJury time_on_ground;
-    if (!episode.run(s.evaluation_time, EvalPhase::measure,
-                     {&average_velocity, &integral_average_velocity, &horizontal_distance,
-                      &maximum_height, &average_height, &contact_quantity, &contact_ratio,
-                      &time_on_ground}))
+    if (!episode.run(
+            s.evaluation_time, EvalPhase::measure,
+            {&average_velocity, &integral_average_velocity, &horizontal_distance, &maximum_height,
+             &average_height, &contact_quantity, &contact_ratio, &time_on_ground}))
       return;
     Outcome& outcome = episode.outcome();
-    for (const Jury* jury :
-         std::initializer_list<const Jury*>{&average_velocity, &integral_average_velocity,
-                                            &horizontal_distance, &maximum_height,
-                                            &average_height, &contact_quantity, &contact_ratio,
-                                            &time_on_ground}) {
+    for (const Jury* jury : std::initializer_list<const Jury*>{
+             &average_velocity, &integral_average_velocity, &horizontal_distance, &maximum_height,
+             &average_height, &contact_quantity, &contact_ratio, &time_on_ground}) {
       outcome.measures.push_back({jury->name(), jury->value(episode.simulation())});
       if (fitness_jury_ == jury->name())
         outcome.fitness = std::max(0.0, outcome.measures.back().value);

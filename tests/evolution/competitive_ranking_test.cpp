@@ -13,8 +13,7 @@ namespace cambrian {
 namespace {
 
 // an individual of status ok with measures a and b (NaN: absent)
-Individual individual(std::uint64_t id, double a, double b,
-                      EvalStatus status = EvalStatus::ok) {
+Individual individual(std::uint64_t id, double a, double b, EvalStatus status = EvalStatus::ok) {
   Individual i;
   i.id = id;
   i.evaluated = true;
@@ -38,19 +37,20 @@ std::vector<double> fitnesses(const std::vector<Individual>& individuals) {
 TEST(CompetitiveRanking, PointsAreTheIndividualsThatDidWorseWeighted) {
   // a (higher better, weight 1): 3, 1, 2, 2 -> individuals worse: 3, 0, 1, 1
   // b (lower better, weight 0.5): 5, 1, 9, 1 -> individuals worse: 1, 2, 0, 2 (ties score alike)
-  std::vector<Individual> table = {individual(1, 3, 5), individual(2, 1, 1),
-                                   individual(3, 2, 9), individual(4, 2, 1)};
+  std::vector<Individual> table = {individual(1, 3, 5), individual(2, 1, 1), individual(3, 2, 9),
+                                   individual(4, 2, 1)};
   rankCompetitively(table, {{"a", 1, true}, {"b", 0.5, false}});
-  EXPECT_EQ(fitnesses(table), (std::vector<double>{3 + 0.5 * 1, 0 + 0.5 * 2, 1 + 0.5 * 0,
-                                                   1 + 0.5 * 2}));
+  EXPECT_EQ(fitnesses(table),
+            (std::vector<double>{3 + 0.5 * 1, 0 + 0.5 * 2, 1 + 0.5 * 0, 1 + 0.5 * 2}));
 }
 
 // failed individuals keep the worst fitness and are nobody's points; a missing measure scores
 // nothing on it and is worse than every value
 TEST(CompetitiveRanking, FailuresAndMissingMeasures) {
   const double none = std::numeric_limits<double>::quiet_NaN();
-  std::vector<Individual> table = {individual(1, 3, none), individual(2, 100, 1, EvalStatus::exploded),
-                                   individual(3, 1, 2), individual(4, none, 3)};
+  std::vector<Individual> table = {individual(1, 3, none),
+                                   individual(2, 100, 1, EvalStatus::exploded), individual(3, 1, 2),
+                                   individual(4, none, 3)};
   rankCompetitively(table, {{"a", 1, true}, {"b", 1, true}});
   // a: 3 beats 1 (1 point); 1 beats none; b: 3 beats 2 (1 point)
   EXPECT_EQ(fitnesses(table), (std::vector<double>{1, kWorstFitness, 0, 1}));

@@ -62,7 +62,7 @@ TEST(MinemonicsJuries, AFallingBlockOnAStraightPath) {
   const double time = n * physics.time_step, size = 0.2;
   EXPECT_NEAR(average.value(simulation), fallen / time / size, 1e-8);
   EXPECT_NEAR(integral.value(simulation), fallen / time / size, 1e-8);  // a straight path
-  EXPECT_NEAR(highest.value(simulation), start.z, 1e-12);  // highest at the start
+  EXPECT_NEAR(highest.value(simulation), start.z, 1e-12);               // highest at the start
   EXPECT_EQ(quantity.value(simulation), 0);
   EXPECT_EQ(ratio.value(simulation), 0);
   EXPECT_EQ(on_ground.value(simulation), 0);
