@@ -16,6 +16,7 @@ struct FractalTerrain {
   double beta = 2.2;   ///< each octave's frequency multiplied by this (Minemonics: 2.2)
   int octaves = 10;    ///< octaves summed (Minemonics: 10)
   std::uint64_t seed = 1;  ///< the gradients' and the origin's random stream
+  friend bool operator==(const FractalTerrain&, const FractalTerrain&) = default;
 };
 
 /// Heights of `terrain` on a square grid of `samples` x `samples` points `spacing` m apart,

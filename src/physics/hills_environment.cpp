@@ -51,11 +51,7 @@ int HillsEnvironment::samples() const {
 Environment HillsEnvironment::build(const PhysicsSettings& physics) const {
   const int n = samples();
   const Made* made = made_.get();
-  auto same = [&](const FractalTerrain& a, const FractalTerrain& b) {
-    return a.cycle == b.cycle && a.height == b.height && a.alpha == b.alpha && a.beta == b.beta &&
-           a.octaves == b.octaves && a.seed == b.seed;
-  };
-  if (!made || made->size != size || made->spacing != spacing || !same(made->terrain, terrain)) {
+  if (!made || made->size != size || made->spacing != spacing || made->terrain != terrain) {
     auto heights = std::make_shared<const std::vector<double>>(fractalHeights(terrain, n, spacing));
     made_ = std::make_shared<const Made>(Made{size, spacing, terrain, std::move(heights)});
   }

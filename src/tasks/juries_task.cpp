@@ -50,15 +50,13 @@ class JuriesTask : public Task {
     AverageHeightJury average_height;
     GroundContactJury contact_quantity(false), contact_ratio(true);
     TimeOnGroundJury time_on_ground;
-    if (!episode.run(
-            s.evaluation_time, EvalPhase::measure,
-            {&average_velocity, &integral_average_velocity, &horizontal_distance, &maximum_height,
-             &average_height, &contact_quantity, &contact_ratio, &time_on_ground}))
+    const std::initializer_list<Jury*> juries = {
+        &average_velocity, &integral_average_velocity, &horizontal_distance, &maximum_height,
+        &average_height,   &contact_quantity,          &contact_ratio,       &time_on_ground};
+    if (!episode.run(s.evaluation_time, EvalPhase::measure, juries))
       return;
     Outcome& outcome = episode.outcome();
-    for (const Jury* jury : std::initializer_list<const Jury*>{
-             &average_velocity, &integral_average_velocity, &horizontal_distance, &maximum_height,
-             &average_height, &contact_quantity, &contact_ratio, &time_on_ground}) {
+    for (const Jury* jury : juries) {
       outcome.measures.push_back({jury->name(), jury->value(episode.simulation())});
       if (fitness_jury_ == jury->name())
         outcome.fitness = std::max(0.0, outcome.measures.back().value);

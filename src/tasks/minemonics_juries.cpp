@@ -67,23 +67,26 @@ void MaximumHeightJury::observe(const Simulation& simulation) {
   highest_ = std::max(highest_, above);
 }
 
-void AverageHeightJury::begin(const Simulation&) {
+void AverageHeightJury::begin(const Simulation& simulation) {
+  volumes_.clear();
+  volume_ = 0;
+  for (const PartPlan& part : simulation.plan().parts) {
+    volumes_.push_back(shapeVolume(part.shape, part.size));
+    volume_ += volumes_.back();
+  }
   sum_ = 0;
   steps_ = 0;
 }
 
 void AverageHeightJury::observe(const Simulation& simulation) {
-  const BodyPlan& plan = simulation.plan();
   const Ground& ground = simulation.environment().ground;
-  double weighted = 0, volume = 0;
-  for (int i = 0; i < static_cast<int>(plan.parts.size()); ++i) {
-    const double v = shapeVolume(plan.parts[i].shape, plan.parts[i].size);
+  double weighted = 0;
+  for (int i = 0; i < static_cast<int>(volumes_.size()); ++i) {
     const Vec3 at = simulation.world().partPosition(i);
     const double floor = ground.heightAt(at.x, at.y);
-    weighted += v * (std::isfinite(floor) ? at.z - floor : at.z);
-    volume += v;
+    weighted += volumes_[i] * (std::isfinite(floor) ? at.z - floor : at.z);
   }
-  sum_ += volume > 0 ? weighted / volume : 0;
+  sum_ += volume_ > 0 ? weighted / volume_ : 0;
   ++steps_;
 }
 

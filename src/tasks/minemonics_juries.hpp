@@ -62,6 +62,8 @@ class AverageHeightJury : public Jury {
   double value(const Simulation& simulation) const override;
 
  private:
+  std::vector<double> volumes_;  // each part's, for the weights
+  double volume_ = 0;            // their sum
   double sum_ = 0;
   std::uint64_t steps_ = 0;
 };

@@ -2,27 +2,32 @@
 // a block resting on the plane and on the hills, a two-part body of which one part touches.
 #include "tasks/minemonics_juries.hpp"
 
+#include "physics/box_part.hpp"
 #include "physics/hills_environment.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <initializer_list>
+#include <vector>
 
 namespace cambrian {
 namespace {
 
-PartPlan block(Vec3 size, Vec3 position, int parent = -1) {
-  PartPlan part;
-  part.size = size;
-  part.mass = 1000 * size.x * size.y * size.z;
-  part.pose.position = position;
-  part.parent = parent;
-  return part;
-}
+// every jury of the juries task but the horizontal distance (DistanceJury's own tests)
+struct Juries {
+  AverageVelocityJury average;
+  IntegralAverageVelocityJury integral;
+  MaximumHeightJury highest;
+  AverageHeightJury height;
+  GroundContactJury quantity{false}, ratio{true};
+  TimeOnGroundJury on_ground;
+  std::vector<Jury*> all() {
+    return {&average, &integral, &highest, &height, &quantity, &ratio, &on_ground};
+  }
+};
 
 // runs `steps` steps of `simulation` (controller off) with every jury watching
-void watch(Simulation& simulation, int steps, std::initializer_list<Jury*> juries) {
+void watch(Simulation& simulation, int steps, const std::vector<Jury*>& juries) {
   for (Jury* jury : juries)
     jury->begin(simulation);
   for (int s = 0; s < steps; ++s) {
@@ -38,22 +43,18 @@ void watch(Simulation& simulation, int steps, std::initializer_list<Jury*> jurie
 // above z = 0, where the plane would be)
 TEST(MinemonicsJuries, AFallingBlockOnAStraightPath) {
   BodyPlan plan;
-  plan.parts.push_back(block({0.2, 0.2, 0.2}, {0, 0, 0}));
+  plan.parts.push_back(test::box({0.2, 0.2, 0.2}, {0, 0, 0}));
   Environment environment;
   environment.ground.kind = Ground::Kind::none;
   environment.gravity = 9.81;
   PhysicsSettings physics;
   Simulation simulation(plan, nullptr, environment, physics, 0);
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
-  AverageVelocityJury average;
-  IntegralAverageVelocityJury integral;
-  MaximumHeightJury highest;
-  AverageHeightJury height;
-  GroundContactJury quantity(false), ratio(true);
-  TimeOnGroundJury on_ground;
+  Juries j;
+  auto& [average, integral, highest, height, quantity, ratio, on_ground] = j;
   const int n = 240;
   const Vec3 start = simulation.centerOfMass();
-  watch(simulation, n, {&average, &integral, &highest, &height, &quantity, &ratio, &on_ground});
+  watch(simulation, n, j.all());
   ASSERT_EQ(simulation.status(), EvalStatus::ok);
   const double sub = physics.time_step / physics.substeps;
   const double big_n = n * physics.substeps;
@@ -78,18 +79,14 @@ TEST(MinemonicsJuries, AFallingBlockOnAStraightPath) {
 // a block resting on the plane: still, on the ground all the time, half its height up
 TEST(MinemonicsJuries, ABlockAtRestOnThePlane) {
   BodyPlan plan;
-  plan.parts.push_back(block({0.4, 0.2, 0.1}, {0, 0, 0}));
+  plan.parts.push_back(test::box({0.4, 0.2, 0.1}, {0, 0, 0}));
   Environment environment;
   Simulation simulation(plan, nullptr, environment, PhysicsSettings{}, 0);
   for (int s = 0; s < 240; ++s)
     simulation.step(false);  // comes to rest
-  AverageVelocityJury average;
-  IntegralAverageVelocityJury integral;
-  MaximumHeightJury highest;
-  AverageHeightJury height;
-  GroundContactJury quantity(false), ratio(true);
-  TimeOnGroundJury on_ground;
-  watch(simulation, 480, {&average, &integral, &highest, &height, &quantity, &ratio, &on_ground});
+  Juries j;
+  auto& [average, integral, highest, height, quantity, ratio, on_ground] = j;
+  watch(simulation, 480, j.all());
   const double size = std::cbrt(0.4 * 0.2 * 0.1);
   EXPECT_LT(average.value(simulation), 1e-4);
   EXPECT_LT(integral.value(simulation), 1e-3);
@@ -106,7 +103,7 @@ TEST(MinemonicsJuries, HeightsOnTheHillsAreAboveTheGroundUnderThem) {
   hills.terrain.height = 2;
   const Environment environment = hills.build(PhysicsSettings{});
   BodyPlan plan;
-  plan.parts.push_back(block({0.2, 0.2, 0.2}, {5.3, -3.1, 0}));
+  plan.parts.push_back(test::box({0.2, 0.2, 0.2}, {5.3, -3.1, 0}));
   Simulation simulation(plan, nullptr, environment, PhysicsSettings{}, 0);
   for (int s = 0; s < 480; ++s)
     simulation.step(false);
@@ -122,8 +119,8 @@ TEST(MinemonicsJuries, HeightsOnTheHillsAreAboveTheGroundUnderThem) {
 // a body of two parts of which only one lies on the ground: one part of two touched
 TEST(MinemonicsJuries, GroundContactsCountThePartsThatTouched) {
   BodyPlan plan;
-  plan.parts.push_back(block({0.4, 0.4, 0.1}, {0, 0, 0}));
-  PartPlan mast = block({0.1, 0.1, 0.4}, {0, 0, 0.25}, 0);
+  plan.parts.push_back(test::box({0.4, 0.4, 0.1}, {0, 0, 0}));
+  PartPlan mast = test::box({0.1, 0.1, 0.4}, {0, 0, 0.25}, 0);
   mast.joint = JointType::fixed;
   mast.pivot_in_parent = {0, 0, 0.05};
   mast.pivot_in_child = {0, 0, -0.2};
