@@ -26,6 +26,12 @@ set_package_properties(HDF5 PROPERTIES TYPE REQUIRED PURPOSE "history.h5 and che
 find_package(Boost 1.74 REQUIRED COMPONENTS program_options)
 set_package_properties(Boost PROPERTIES TYPE REQUIRED PURPOSE "command line and INI files")
 
+# Boost.Odeint (header-only, in the same Boost headers): the chaotic controllers' integration
+find_path(ODEINT_INCLUDE_DIR boost/numeric/odeint/stepper/runge_kutta4.hpp
+          HINTS ${Boost_INCLUDE_DIRS} REQUIRED)
+add_library(cambrian_odeint INTERFACE)
+target_include_directories(cambrian_odeint SYSTEM INTERFACE ${ODEINT_INCLUDE_DIR})
+
 # Random123 (librandom123-dev, header-only): counter-based Philox generator
 find_path(RANDOM123_INCLUDE_DIR Random123/philox.h REQUIRED)
 add_library(cambrian_random123 INTERFACE)

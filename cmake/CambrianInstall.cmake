@@ -38,9 +38,10 @@ target_link_libraries(cambrian_cambrian INTERFACE ${cambrian_exported_modules})
 set_target_properties(cambrian_flags PROPERTIES EXPORT_NAME flags)
 set_target_properties(cambrian_bullet PROPERTIES EXPORT_NAME bullet)
 set_target_properties(cambrian_random123 PROPERTIES EXPORT_NAME random123)
+set_target_properties(cambrian_odeint PROPERTIES EXPORT_NAME odeint)
 
 install(TARGETS ${cambrian_exported_modules} cambrian_cambrian cambrian_flags cambrian_bullet
-                cambrian_random123
+                cambrian_random123 cambrian_odeint
         EXPORT cambrianTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

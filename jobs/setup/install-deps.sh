@@ -12,7 +12,7 @@ packages=(
   libbullet-dev libbullet-extras-dev
   libopenmpi-dev openmpi-bin
   libhdf5-dev hdf5-tools
-  libboost-program-options-dev
+  libboost-program-options-dev libboost-dev
   googletest libgtest-dev
   librandom123-dev
   python3 python3-h5py python3-numpy python3-matplotlib python3-pytest python3-pil python3-pandas

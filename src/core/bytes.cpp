@@ -70,12 +70,17 @@ Vec3 ByteReader::vec3() {
 }
 
 bool ByteReader::flag(const char* field) {
+  return upTo(field, 1) == 1;
+}
+
+std::uint8_t ByteReader::upTo(const char* field, std::uint8_t max) {
   std::uint8_t v = u8();
-  if (v > 1) {
+  if (v > max) {
     --offset_;
-    fail(context_ + " " + field + " is " + std::to_string(v) + ", expected 0 or 1");
+    fail(context_ + " " + field + " is " + std::to_string(v) + ", expected " +
+         (max == 1 ? std::string("0 or 1") : "0 to " + std::to_string(max)));
   }
-  return v == 1;
+  return v;
 }
 
 std::size_t ByteReader::count(std::size_t element_bytes) {

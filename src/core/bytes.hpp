@@ -60,6 +60,8 @@ class ByteReader {
   Vec3 vec3();
   /// A byte that must be 0 or 1, named `field` in the message otherwise.
   bool flag(const char* field);
+  /// A byte in 0..max; throws InputError naming `field` and its value otherwise.
+  std::uint8_t upTo(const char* field, std::uint8_t max);
   /// A u32 count of elements of at least `element_bytes` each that must fit in what is left.
   std::size_t count(std::size_t element_bytes);
   /// A u64 length and that many bytes.

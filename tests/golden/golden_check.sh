@@ -129,6 +129,8 @@ case $mode in
       "${common[@]}" --seed 15
     evolve juries_ranked --config "$source_dir/jobs/experiments/minemonics/juries.ini" \
       "${common[@]}" --seed 16
+    evolve walk_chaotic --config "$source_dir/jobs/experiments/minemonics/walk-chaotic.ini" \
+      "${common[@]}" --seed 17
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do
@@ -139,6 +141,12 @@ case $mode in
       --task.evaluation_time 2
     simulate simulate_walker4_hills --genome "$creatures/walker4.genome" --task walk \
       --environment.name hills --environment.hill_height 1.5 --task.evaluation_time 3
+    for creature in leg snake; do
+      simulate "simulate_minemonics_${creature}_chaotic" \
+        --genome "$creatures/minemonics/$creature.genome" \
+        --config "$source_dir/jobs/experiments/minemonics/walk-chaotic.ini" \
+        --task.evaluation_time 2
+    done
     simulate simulate_snake_torque --genome "$creatures/snake.genome" --task walk \
       --physics.actuation torque --physics.self_collision true --task.evaluation_time 2
     for seed in 1 2 3 4 5 6; do

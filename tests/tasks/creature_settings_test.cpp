@@ -57,10 +57,10 @@ TEST(CreatureSettings, CopiesAreDeep) {
 TEST(CreatureSettings, IniTextHoldsEveryCreatureSection) {
   CreatureSettings settings;
   std::string text = settings.iniText();
-  for (const char* line :
-       {"[environment]\nhill_alpha = 3.3\n", "\nname = plane\nnet_gravity = 0\n",
-        "[genome]\ncatapult = false\ncontact_sensors = part\nencoding = directed_graph\n",
-        "world = featherstone\n", "name = walk\n", "max_weight = 5\n"})
+  for (const char* line : {"[environment]\nhill_alpha = 3.3\n", "\nname = plane\nnet_gravity = 0\n",
+                           "[genome]\ncatapult = false\nchua_limit = 2\n",
+                           "\ncontact_sensors = part\nencoding = directed_graph\n",
+                           "world = featherstone\n", "name = walk\n", "max_weight = 5\n"})
     EXPECT_NE(text.find(line), std::string::npos) << line;
   // another schema bound to the same settings sets them
   SettingsSchema schema;

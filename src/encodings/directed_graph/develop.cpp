@@ -502,7 +502,8 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
   // effectors: one per driven degree of freedom of each non-root joint, each with its wire and
   // the oscillator of the connection that made the part
   std::vector<SineOscillator> oscillators;
-  bool any_oscillator = false;
+  std::vector<ChuaOscillator> chaotic_oscillators;
+  bool any_oscillator = false, any_chaotic = false;
   for (int i = 1; i < part_count; ++i) {
     const PartPlan& part = plan.parts[i];
     const PartGene& node = genome.nodes[part.node];
@@ -512,8 +513,13 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
       plan.effectors.push_back(EffectorPlan{i, d});
       network->effector_inputs.push_back(wiring.partInput(node.effectors[d].input, i));
       const JointControllerGene& gene = genome.connections[part.connection].controller;
-      oscillators.push_back(gene);
-      any_oscillator = any_oscillator || gene.enabled;
+      const bool chaotic = gene.kind == JointControllerKind::chaotic;
+      oscillators.push_back(SineOscillator{gene.enabled && !chaotic, gene.amplitude, gene.frequency,
+                                           gene.phase, gene.offset});
+      chaotic_oscillators.push_back(ChuaOscillator{gene.enabled && chaotic, gene.amplitude,
+                                                   gene.offset, gene.chua_start, gene.chua_speed});
+      any_oscillator = any_oscillator || (gene.enabled && !chaotic);
+      any_chaotic = any_chaotic || (gene.enabled && chaotic);
     }
   }
 
@@ -540,18 +546,29 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
     plan.effectors.push_back(EffectorPlan{0, 0, EffectorKind::release});
     network->effector_inputs.push_back(Wire{signal(neurons.size() - 1), 1.0});
     oscillators.push_back(SineOscillator{});
+    chaotic_oscillators.push_back(ChuaOscillator{});
   }
 
-  // the network drives the effectors; the joint oscillators, when any is on, add to it
+  // the network drives the effectors; the sine and the chaotic joint oscillators, those of each
+  // kind that has one on, add to it in that order
   network->sensor_count = plan.sensors.size();
-  if (!any_oscillator) {
+  if (!any_oscillator && !any_chaotic) {
     creature.controller = std::move(network);
     return creature;
   }
-  auto sine = std::make_shared<SineOscillatorsPlan>();
-  sine->oscillators = std::move(oscillators);
   auto sum = std::make_shared<ControllerSumPlan>();
-  sum->parts = {std::move(network), std::move(sine)};
+  sum->parts = {std::move(network)};
+  if (any_oscillator) {
+    auto sine = std::make_shared<SineOscillatorsPlan>();
+    sine->oscillators = std::move(oscillators);
+    sum->parts.push_back(std::move(sine));
+  }
+  if (any_chaotic) {
+    auto chua = std::make_shared<ChuaOscillatorsPlan>();
+    chua->oscillators = std::move(chaotic_oscillators);
+    chua->circuit = limits.chua;
+    sum->parts.push_back(std::move(chua));
+  }
   creature.controller = std::move(sum);
   return creature;
 }

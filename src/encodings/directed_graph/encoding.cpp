@@ -146,6 +146,30 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
       .require([&g] { return g.release_delay >= 3 && g.release_delay <= 257; },
                "must be in [3, 257]");
 
+  // Minemonics' joint controllers: sine or chaotic (a Chua circuit per joint)
+  s.addChoice("genome.joint_controller", g.joint_controller,
+              {{"sine", JointControllerKind::sine}, {"chaotic", JointControllerKind::chaotic}},
+              "the kind of joint controller random connections get: sine (amplitude sin(2 pi f t "
+              "+ phase) + offset) | chaotic (amplitude z + offset of a Chua circuit, Minemonics' "
+              "chaotic controller)");
+  s.add("genome.joint_controller_chance", g.joint_controller_chance,
+        "the chance a random connection's joint controller is on (Minemonics: every joint, 1)")
+      .require([&g] { return g.joint_controller_chance >= 0 && g.joint_controller_chance <= 1; },
+               "must be in [0, 1]");
+  s.add("genome.chua_rate", g.chua.rate,
+        "chaotic controllers: circuit time per simulated second at speed 1 (Minemonics: 0.001 "
+        "per physics step of 1/240 s, 0.24)")
+      .require([&g] { return g.chua.rate > 0 && g.chua.rate <= 100; }, "must be in (0, 100]");
+  s.add("genome.chua_limiter", g.chua.limited,
+        "chaotic controllers: the limiter on dx/dt, (tanh(softness (limit - x)) + 1) / 2 "
+        "(in Minemonics' code, commented out)");
+  s.add("genome.chua_limit", g.chua.limit, "chaotic controllers: the limiter's x (Minemonics: 2)")
+      .require([&g] { return std::isfinite(g.chua.limit); }, "must be finite");
+  s.add("genome.chua_limit_softness", g.chua.limit_softness,
+        "chaotic controllers: how sharply the limiter holds x below the limit (Minemonics: 7)")
+      .require([&g] { return g.chua.limit_softness > 0 && std::isfinite(g.chua.limit_softness); },
+               "must be > 0 and finite");
+
   // [evolution]: the structural mutation rates of the graph (their historic keys)
   MutationSettings& m = mutation;
   auto probability = [&s](const char* key, double& rate, const char* help) {

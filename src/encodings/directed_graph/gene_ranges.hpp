@@ -27,6 +27,13 @@ constexpr double kControllerAmplitudeMax = 1.0;
 constexpr double kControllerOffsetBound = 1.0;
 /// JointControllerGene.phase lies in [-kControllerPhaseBound, kControllerPhaseBound] radians.
 constexpr double kControllerPhaseBound = kPi;
+/// JointControllerGene.chua_start components lie in [-kChuaStartBound, kChuaStartBound]
+/// (Minemonics' initial conditions).
+constexpr double kChuaStartBound = 0.5;
+/// JointControllerGene.chua_speed lies in [kChuaSpeedMin, kChuaSpeedMax] (Minemonics' range).
+constexpr double kChuaSpeedMin = 0.001;
+/// The highest chua_speed.
+constexpr double kChuaSpeedMax = 10.0;
 /// ConnectionGene.reflection may only use these bits (mirror x, y, z).
 constexpr std::uint8_t kReflectionMask = 0x7;
 

@@ -9,6 +9,7 @@
 #include "cambrian/encoding.hpp"
 #include "cambrian/math.hpp"
 
+#include "brain/chua_oscillators.hpp"
 #include "brain/neural_network.hpp"
 #include "brain/sine_oscillators.hpp"
 
@@ -61,9 +62,26 @@ struct EffectorGene {
   friend bool operator==(const EffectorGene&, const EffectorGene&) = default;
 };
 
-/// Minemonics' per-joint controller: a sine added to each effector of the joint it drives (the
-/// oscillator the sine controller runs, brain/sine_oscillators.hpp).
-using JointControllerGene = SineOscillator;
+/// The kind of a joint controller (genome.joint_controller).
+enum class JointControllerKind : std::uint8_t {
+  sine,     ///< amplitude * sin(2 pi frequency t + phase) + offset (brain/sine_oscillators.hpp)
+  chaotic,  ///< amplitude * z + offset of a Chua circuit (brain/chua_oscillators.hpp)
+};
+
+/// Minemonics' per-joint controller: a sine or a chaotic oscillator added to each effector of the
+/// joint it drives. A sine reads amplitude, frequency, phase and offset; a chaotic one amplitude,
+/// offset, chua_start and chua_speed (the others are kept, unread, so a genome round-trips).
+struct JointControllerGene {
+  bool enabled = false;
+  double amplitude = 0;  ///< effector units (a chaotic one: per unit of z)
+  double frequency = 1;  ///< Hz
+  double phase = 0;      ///< radians
+  double offset = 0;     ///< effector units
+  JointControllerKind kind = JointControllerKind::sine;
+  ChuaState chua_start{0, 0, 0};  ///< the circuit's state at the start
+  double chua_speed = 1;          ///< circuit time runs chua_speed * genome.chua_rate per second
+  friend bool operator==(const JointControllerGene&, const JointControllerGene&) = default;
+};
 
 /// A class of body parts (a graph node).
 struct PartGene {
@@ -175,6 +193,12 @@ struct GenomeLimits {
   double projectile_min_side = 0.05;  ///< m, any side of a projectile, its own range
   double projectile_max_side = 1.5;   ///< m
   int release_delay = 30;             ///< controller steps until the projectile is let go at last
+  /// The kind of joint controller random connections get (Minemonics: one kind per run).
+  JointControllerKind joint_controller = JointControllerKind::sine;
+  /// The chance a random connection has its joint controller on (Minemonics: every joint).
+  double joint_controller_chance = 0.25;
+  /// Every chaotic joint controller's circuit: the Chua constants, the limiter and the rate.
+  ChuaCircuit chua;
 };
 
 //---------------------------------------------------------------- operations
@@ -187,9 +211,10 @@ Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_
 /// Checks structure and ranges; throws GenomeError naming the gene and field.
 void validateGenome(const Genome& genome, const GenomeLimits& limits);
 
-/// Current version of the byte format (2: a catapult's projectile after the brain). Readers
-/// accept this and older versions; a genome without a projectile is written as version 1.
-constexpr std::uint32_t kGenomeFormatVersion = 2;
+/// Current version of the byte format (2: a catapult's projectile after the brain; 3: chaotic
+/// joint controllers). Readers accept this and older versions; a genome is written in the oldest
+/// version that carries it (1 without a projectile or a chaotic controller).
+constexpr std::uint32_t kGenomeFormatVersion = 3;
 
 /// The tag that starts the byte form.
 constexpr std::array<char, 4> kGenomeTag = {'C', 'M', 'B', 'G'};

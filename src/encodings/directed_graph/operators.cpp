@@ -104,12 +104,20 @@ class Perturber {
     flip(c.terminal_only);
 
     // joint controller
+    // joint controller: the fields its kind reads (the kind itself is the run's)
     JointControllerGene& j = c.controller;
     flip(j.enabled);
     number(j.amplitude, 0, kControllerAmplitudeMax);
-    number(j.frequency, 0, limits_.max_frequency);
-    number(j.phase, -kControllerPhaseBound, kControllerPhaseBound);
+    if (j.kind == JointControllerKind::sine) {
+      number(j.frequency, 0, limits_.max_frequency);
+      number(j.phase, -kControllerPhaseBound, kControllerPhaseBound);
+      number(j.offset, -kControllerOffsetBound, kControllerOffsetBound);
+      return;
+    }
     number(j.offset, -kControllerOffsetBound, kControllerOffsetBound);
+    for (double& v : j.chua_start)
+      number(v, -kChuaStartBound, kChuaStartBound);
+    number(j.chua_speed, kChuaSpeedMin, kChuaSpeedMax);
   }
 
   // a catapult's projectile: where the arm holds it and the release wire always; its size and

@@ -109,15 +109,34 @@ ConnectionGene randomConnectionGene(std::uint16_t from, std::uint16_t to,
   }
   c.terminal_only = rng.bernoulli(0.1);
 
-  // Minemonics joint controller now and then
-  if (rng.bernoulli(0.25)) {
-    c.controller.enabled = true;
-    c.controller.amplitude = rng.uniform(0.2, 1.0);
-    c.controller.frequency = uniformWithin(rng, 0.3, 2.0, 0, limits.max_frequency);
-    c.controller.phase = rng.uniform(-kControllerPhaseBound, kControllerPhaseBound);
-    c.controller.offset = rng.uniform(-0.3, 0.3);
+  // Minemonics joint controller now and then, always of the run's kind
+  c.controller.kind = limits.joint_controller;
+  if (rng.bernoulli(limits.joint_controller_chance)) {
+    c.controller = randomJointController(limits, rng);
   }
   return c;
+}
+
+JointControllerGene randomJointController(const GenomeLimits& limits, Rng& rng) {
+  JointControllerGene controller;
+  controller.enabled = true;
+  if (limits.joint_controller == JointControllerKind::sine) {
+    controller.amplitude = rng.uniform(0.2, 1.0);
+    controller.frequency = uniformWithin(rng, 0.3, 2.0, 0, limits.max_frequency);
+    controller.phase = rng.uniform(-kControllerPhaseBound, kControllerPhaseBound);
+    controller.offset = rng.uniform(-0.3, 0.3);
+    return controller;
+  }
+  // chaotic: z swings within about +-3.6 on the double scroll, so these amplitudes span about
+  // +-0.2 to +-1 of drive
+  controller.kind = JointControllerKind::chaotic;
+  controller.amplitude = rng.uniform(0.05, 0.3);
+  controller.offset = rng.uniform(-0.3, 0.3);
+  for (double& v : controller.chua_start)
+    v = rng.uniform(-kChuaStartBound, kChuaStartBound);
+  controller.chua_speed =
+      rng.bernoulli(0.5) ? rng.uniform(kChuaSpeedMin, 1.0) : rng.uniform(1.0, kChuaSpeedMax);
+  return controller;
 }
 
 ProjectileGene randomProjectileGene(const GenomeLimits& limits, Rng& rng) {

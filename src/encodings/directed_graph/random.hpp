@@ -22,6 +22,11 @@ PartGene randomPartGene(const GenomeLimits& limits, Rng& rng);
 ConnectionGene randomConnectionGene(std::uint16_t from, std::uint16_t to,
                                     const GenomeLimits& limits, Rng& rng);
 
+/// A random joint controller, on, of limits.joint_controller's kind: a sine of moderate amplitude
+/// and frequency; or a chaotic one started in Minemonics' box (each of x y z in +-0.5) at a speed
+/// half the time below 1, half above (Minemonics' 0.001..1 and 1..10).
+JointControllerGene randomJointController(const GenomeLimits& limits, Rng& rng);
+
 /// A catapult's projectile (GenomeLimits::catapult): held anywhere on the arm, with a random
 /// release wire; a cube of limits.projectile_side and projectile_density, or with
 /// projectile_mutation a random block within the projectile's size range (and a random density

@@ -80,6 +80,11 @@ void fitConnection(ConnectionGene& c, const GenomeLimits& limits) {
   j.frequency = clampToRange(j.frequency, 0, std::max(0.0, limits.max_frequency));
   j.phase = clampToRange(j.phase, -kControllerPhaseBound, kControllerPhaseBound);
   j.offset = clampToRange(j.offset, -kControllerOffsetBound, kControllerOffsetBound);
+  if (j.kind != JointControllerKind::sine && j.kind != JointControllerKind::chaotic)
+    j.kind = JointControllerKind::sine;
+  for (double& v : j.chua_start)
+    v = clampToRange(v, -kChuaStartBound, kChuaStartBound);
+  j.chua_speed = clampToRange(j.chua_speed, kChuaSpeedMin, kChuaSpeedMax);
 }
 
 // a catapult's projectile within its own size range and the density range; position within the

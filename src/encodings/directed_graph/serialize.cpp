@@ -4,6 +4,7 @@
 #include "core/bytes.hpp"
 #include "encodings/directed_graph/genome.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <string>
@@ -74,7 +75,11 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
   w.raw(kGenomeTag.data(), kGenomeTag.size());
   // the oldest version that carries the genome: 1 without a projectile, so that every other
   // genome keeps its bytes
-  w.u32(genome.projectile ? kGenomeFormatVersion : 1);
+  const bool chaotic = std::any_of(
+      genome.connections.begin(), genome.connections.end(),
+      [](const ConnectionGene& c) { return c.controller.kind == JointControllerKind::chaotic; });
+  const std::uint32_t version = chaotic ? 3 : genome.projectile ? 2 : 1;
+  w.u32(version);
 
   // nodes
   w.u32(static_cast<std::uint32_t>(genome.nodes.size()));
@@ -101,18 +106,26 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
     w.f64(c.scale);
     w.u8(c.reflection);
     w.u8(c.terminal_only ? 1 : 0);
-    w.u8(c.controller.enabled ? 1 : 0);
+    // bit 0: on; bit 1 (version 3): chaotic, its circuit's start and speed after the sine's
+    const bool chaotic = c.controller.kind == JointControllerKind::chaotic;
+    w.u8(static_cast<std::uint8_t>((c.controller.enabled ? 1 : 0) | (chaotic ? 2 : 0)));
     w.f64(c.controller.amplitude);
     w.f64(c.controller.frequency);
     w.f64(c.controller.phase);
     w.f64(c.controller.offset);
+    if (chaotic) {
+      for (double v : c.controller.chua_start)
+        w.f64(v);
+      w.f64(c.controller.chua_speed);
+    }
   }
 
-  // brain, then (version 2) the projectile
+  // brain, then (from version 2) whether a projectile follows, and it
   writeNeurons(w, genome.brain);
+  if (version >= 2)
+    w.u8(genome.projectile ? 1 : 0);
   if (genome.projectile) {
     const ProjectileGene& p = *genome.projectile;
-    w.u8(1);
     w.vec3(p.dimensions);
     w.f64(p.density);
     w.vec3(p.position);
@@ -173,14 +186,22 @@ Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
     c.scale = r.f64();
     c.reflection = r.u8();
     c.terminal_only = r.flag("terminal_only");
-    c.controller.enabled = r.flag("controller.enabled");
+    // before version 3 only on / off
+    const std::uint8_t controller_bits = r.upTo("controller.enabled", version >= 3 ? 3 : 1);
+    c.controller.enabled = (controller_bits & 1) != 0;
     c.controller.amplitude = r.f64();
     c.controller.frequency = r.f64();
     c.controller.phase = r.f64();
     c.controller.offset = r.f64();
+    if ((controller_bits & 2) != 0) {
+      c.controller.kind = JointControllerKind::chaotic;
+      for (double& v : c.controller.chua_start)
+        v = r.f64();
+      c.controller.chua_speed = r.f64();
+    }
   }
 
-  // brain, then (version 2) the projectile, then nothing
+  // brain, then (from version 2) the projectile, then nothing
   genome.brain = readNeurons(r, "brain");
   if (version >= 2) {
     r.context("projectile");

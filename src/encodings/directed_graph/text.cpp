@@ -20,15 +20,28 @@ namespace {
 constexpr const char* kHeader = "cambrian-genome";
 constexpr const char* kEnd = "end";  // the last statement of a version-2 text
 
+// whether a controller's chaotic fields are the default ones bit for bit
+bool isDefaultChuaFields(const JointControllerGene& controller) {
+  const JointControllerGene none;
+  auto same = [](double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  };
+  return same(controller.chua_start[0], none.chua_start[0]) &&
+         same(controller.chua_start[1], none.chua_start[1]) &&
+         same(controller.chua_start[2], none.chua_start[2]) &&
+         same(controller.chua_speed, none.chua_speed);
+}
+
 // whether a controller is the default one bit for bit (a -0 offset is written: it is not 0)
 bool isDefaultController(const JointControllerGene& controller) {
   const JointControllerGene none;
   auto same = [](double a, double b) {
     return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
   };
-  return controller.enabled == none.enabled && same(controller.amplitude, none.amplitude) &&
-         same(controller.frequency, none.frequency) && same(controller.phase, none.phase) &&
-         same(controller.offset, none.offset);
+  return controller.enabled == none.enabled && controller.kind == none.kind &&
+         same(controller.amplitude, none.amplitude) && same(controller.frequency, none.frequency) &&
+         same(controller.phase, none.phase) && same(controller.offset, none.offset) &&
+         isDefaultChuaFields(controller);
 }
 
 constexpr const char* kShapeNames[] = {"box"};
@@ -305,13 +318,22 @@ void parseConnectionFields(Line& line, ConnectionGene& c) {
   }
 }
 
-// controller fields: off, amplitude, frequency, phase, offset
+// controller fields: off, sine, chaotic, amplitude, frequency, phase, offset, start, speed
 void parseControllerFields(Line& line, JointControllerGene& controller) {
   controller.enabled = true;
   while (line.more()) {
     std::string_view key = line.next("controller field", "a field");
     if (key == "off") {
       controller.enabled = false;
+    } else if (key == "sine") {
+      controller.kind = JointControllerKind::sine;
+    } else if (key == "chaotic") {
+      controller.kind = JointControllerKind::chaotic;
+    } else if (key == "start") {
+      for (double& v : controller.chua_start)
+        v = line.number("start");
+    } else if (key == "speed") {
+      controller.chua_speed = line.number("speed");
     } else if (key == "amplitude") {
       controller.amplitude = line.number("amplitude");
     } else if (key == "frequency") {
@@ -322,7 +344,7 @@ void parseControllerFields(Line& line, JointControllerGene& controller) {
       controller.offset = line.number("offset");
     } else {
       line.fail("unknown controller field '" + std::string(key) +
-                "' (off, amplitude, frequency, phase, offset)");
+                "' (off, sine, chaotic, amplitude, frequency, phase, offset, start, speed)");
     }
   }
 }
@@ -380,10 +402,17 @@ std::string genomeToText(const Genome& genome) {
       out << " terminal_only";
     out << "\n";
     if (!isDefaultController(c.controller)) {
-      out << "  controller" << (c.controller.enabled ? "" : " off") << " amplitude "
-          << formatNumber(c.controller.amplitude) << " frequency "
-          << formatNumber(c.controller.frequency) << " phase " << formatNumber(c.controller.phase)
-          << " offset " << formatNumber(c.controller.offset) << "\n";
+      const JointControllerGene& j = c.controller;
+      out << "  controller" << (j.enabled ? "" : " off")
+          << (j.kind == JointControllerKind::chaotic ? " chaotic" : "") << " amplitude "
+          << formatNumber(j.amplitude) << " frequency " << formatNumber(j.frequency) << " phase "
+          << formatNumber(j.phase) << " offset " << formatNumber(j.offset);
+      // a chaotic controller's circuit (a sine one's too, should they not be the defaults)
+      if (j.kind == JointControllerKind::chaotic || !isDefaultChuaFields(j)) {
+        out << " start " << formatNumber(j.chua_start[0]) << " " << formatNumber(j.chua_start[1])
+            << " " << formatNumber(j.chua_start[2]) << " speed " << formatNumber(j.chua_speed);
+      }
+      out << "\n";
     }
   }
 

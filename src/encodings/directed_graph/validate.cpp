@@ -139,6 +139,17 @@ void checkConnection(std::size_t index, const ConnectionGene& connection, std::s
                   kControllerPhaseBound);
   checkFixedRange(where, "controller.offset", controller.offset, -kControllerOffsetBound,
                   kControllerOffsetBound);
+  if (controller.kind != JointControllerKind::sine &&
+      controller.kind != JointControllerKind::chaotic) {
+    throw GenomeError(where +
+                      ": controller.kind = " + std::to_string(static_cast<int>(controller.kind)) +
+                      " is neither sine (0) nor chaotic (1)");
+  }
+  for (int k = 0; k < 3; ++k) {
+    checkFixedRange(where, std::string("controller.start.") + kAxes[k], controller.chua_start[k],
+                    -kChuaStartBound, kChuaStartBound);
+  }
+  checkFixedRange(where, "controller.speed", controller.chua_speed, kChuaSpeedMin, kChuaSpeedMax);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -630,6 +631,59 @@ TEST(Develop, HandWrittenCreaturesHaveTheirPartsAndJoints) {
     expectPlanConsistent(*plan, limits);
 }
 
+// Minemonics' model organisms (jobs/creatures/minemonics): the leg's two equal limbs and hinge,
+// the snake's chain of six, the pod's four legs on one body, the ragdoll's head, arms and legs;
+// every effector driven by a chaotic oscillator, each connection's with its own start
+TEST(Develop, MinemonicsModelOrganismsHaveTheirPartsJointsAndChaoticControllers) {
+  const GenomeLimits limits;
+  const JointType rigid = JointType::fixed, revolute = JointType::revolute,
+                  universal = JointType::universal, spherical = JointType::spherical;
+  const Vec3 limb{0.5, 0.1, 0.1}, segment{0.3, 0.1, 0.1}, pod_leg{0.3, 0.08, 0.08};
+  const FlatPlan leg = flatDevelop(creature("minemonics/leg"), limits);
+  expectParts(leg, {{0, -1, rigid, 1.2, limb, false}, {1, 0, revolute, 1.2, limb, false}}, "leg");
+  const FlatPlan snake = flatDevelop(creature("minemonics/snake"), limits);
+  std::vector<ExpectedPart> chain;
+  for (int i = 0; i < 6; ++i)
+    chain.push_back({i, i - 1, i == 0 ? rigid : revolute, 1, segment, false});
+  expectParts(snake, chain, "snake");
+  const FlatPlan pod = flatDevelop(creature("minemonics/pod"), limits);
+  std::vector<ExpectedPart> pod_parts{{0, -1, rigid, 1, {0.6, 0.3, 0.15}, false}};
+  for (int i = 0; i < 4; ++i)
+    pod_parts.push_back({1, 0, revolute, 0.8, pod_leg, false});
+  expectParts(pod, pod_parts, "pod");
+  const FlatPlan ragdoll = flatDevelop(creature("minemonics/ragdoll"), limits);
+  EXPECT_EQ(ragdoll.parts.size(), 10u);
+  EXPECT_EQ(ragdoll.degreesOfFreedom(), 3 + 2 * 3 + 2 * 2 + 2 + 2);
+  int spherical_joints = 0, universal_joints = 0;
+  for (const PartPlan& part : ragdoll.parts) {
+    spherical_joints += part.joint == spherical;
+    universal_joints += part.joint == universal;
+  }
+  EXPECT_EQ(spherical_joints, 3);  // the neck and the shoulders
+  EXPECT_EQ(universal_joints, 2);  // the hips
+
+  for (const char* name : {"leg", "snake", "pod", "ragdoll"}) {
+    const Creature creature_plan = develop(creature(std::string("minemonics/") + name), limits);
+    const auto* sum = dynamic_cast<const ControllerSumPlan*>(creature_plan.controller.get());
+    ASSERT_NE(sum, nullptr) << name;
+    EXPECT_EQ(sum->kind(), "network+chaotic") << name;
+    const auto* chua = dynamic_cast<const ChuaOscillatorsPlan*>(sum->parts.at(1).get());
+    ASSERT_NE(chua, nullptr) << name;
+    ASSERT_EQ(chua->oscillators.size(), creature_plan.body.effectors.size()) << name;
+    std::vector<ChuaState> starts;
+    for (const ChuaOscillator& o : chua->oscillators) {
+      EXPECT_TRUE(o.enabled) << name;
+      if (std::find(starts.begin(), starts.end(), o.start) == starts.end())
+        starts.push_back(o.start);
+    }
+    // the leg's one hinge, the snake's five, the pod's four hips, the ragdoll's seven connections
+    const std::size_t connections = creature(std::string("minemonics/") + name).connections.size();
+    EXPECT_EQ(starts.size(), connections) << name;
+  }
+  for (const FlatPlan* plan : {&leg, &snake, &pod, &ragdoll})
+    expectPlanConsistent(*plan, limits);
+}
+
 TEST(Develop, BrokenGenomesAndLimitsThrowNamingTheField) {
   const Genome empty;
   EXPECT_THROW(flatDevelop(empty, GenomeLimits{}), GenomeError);
@@ -720,6 +774,45 @@ TEST(Develop, PhotosensorsOnEveryPart) {
   EXPECT_EQ(every.sensors[6].part, 1);
   EXPECT_EQ(every.sensors[8].axis, 2);
   EXPECT_EQ(every.sensors[9].part, 0);
+}
+
+// a chaotic joint controller develops into the chaotic oscillators after the network (and the
+// sine ones when some joint has one), driving its joint's effector amplitude * z + offset from its
+// start, with the run's circuit; a joint without one is driven by the network alone
+TEST(Develop, ChaoticJointControllersFollowTheNetwork) {
+  Genome g;
+  g.nodes = {box({0.4, 0.2, 0.2}), box({0.2, 0.2, 0.2})};
+  g.nodes[1].effectors.resize(1);  // its input is the constant 0
+  g.connections = {link(0, 1, {1, 0, 0}), link(0, 1, {-1, 0, 0})};
+  JointControllerGene& chaotic = g.connections[0].controller;
+  chaotic.enabled = true;
+  chaotic.kind = JointControllerKind::chaotic;
+  chaotic.amplitude = 0.25;
+  chaotic.offset = 0.1;
+  chaotic.chua_start = {0.1, 0.2, 0.4};
+  chaotic.chua_speed = 3;
+  GenomeLimits limits;
+  limits.chua.limited = true;
+  const Creature creature = develop(g, limits);
+  const auto* sum = dynamic_cast<const ControllerSumPlan*>(creature.controller.get());
+  ASSERT_NE(sum, nullptr);
+  EXPECT_EQ(sum->kind(), "network+chaotic");
+  const auto* chua = dynamic_cast<const ChuaOscillatorsPlan*>(sum->parts.at(1).get());
+  ASSERT_NE(chua, nullptr);
+  EXPECT_EQ(chua->circuit, limits.chua);
+  ASSERT_EQ(chua->oscillators.size(), 2u);
+  EXPECT_EQ(chua->oscillators[0], (ChuaOscillator{true, 0.25, 0.1, {0.1, 0.2, 0.4}, 3}));
+  EXPECT_FALSE(chua->oscillators[1].enabled);
+  auto controller = creature.controller->build(1.0 / 240, creature.body.sensors.size(), 2);
+  std::vector<double> sensors(creature.body.sensors.size(), 0.0), drives(2);
+  controller->step(sensors, drives);
+  EXPECT_DOUBLE_EQ(drives[0], 0.25 * 0.4 + 0.1);
+  EXPECT_EQ(drives[1], 0.0);
+
+  // with a sine on the other joint: network, sine, chaotic
+  g.connections[1].controller.enabled = true;
+  g.connections[1].controller.amplitude = 0.5;
+  EXPECT_EQ(develop(g, limits).controller->kind(), "network+sine+chaotic");
 }
 
 }  // namespace

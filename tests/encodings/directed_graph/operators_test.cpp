@@ -4,6 +4,7 @@
 #include "cambrian/rng.hpp"
 
 #include "encodings/directed_graph/catapult_limits.hpp"
+#include "encodings/directed_graph/chaotic_limits.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/directed_graph/genome.hpp"
 #include "encodings/directed_graph/graph.hpp"
@@ -330,6 +331,33 @@ TEST(Operators, GraftIntoAnyNode) {
   EXPECT_EQ(root_kept, 300);
   EXPECT_GT(any_kept, 60);
   EXPECT_LT(any_kept, 140);
+}
+
+// mutation, crossover and grafting in a chaotic run keep every controller chaotic and valid, and
+// mutation moves the circuits' starts and speeds
+TEST(Operators, ChaoticControllersStayChaoticAndValid) {
+  const GenomeLimits limits = test::chaoticLimits();
+  int moved = 0;
+  for (std::uint64_t lineage = 0; lineage < 50; ++lineage) {
+    Genome g = randomGenome(limits, 73, 0, lineage);
+    const Genome other = randomGenome(limits, 74, 0, lineage);
+    for (std::uint64_t generation = 0; generation < 20; ++generation) {
+      Rng rng(73, RngPurpose::variation, generation, lineage);
+      const Genome before = g;
+      g = mutate(g, limits, aggressive(true), rng);
+      g = generation % 3 == 0 ? crossover(g, other, limits, rng) : g;
+      g = generation % 5 == 0 ? graft(g, other, limits, rng) : g;
+      ASSERT_NO_THROW(validateGenome(g, limits));
+      for (const ConnectionGene& c : g.connections)
+        ASSERT_EQ(c.controller.kind, JointControllerKind::chaotic);
+      for (std::size_t i = 0; i < std::min(g.connections.size(), before.connections.size()); ++i) {
+        moved +=
+            g.connections[i].controller.chua_start != before.connections[i].controller.chua_start ||
+            g.connections[i].controller.chua_speed != before.connections[i].controller.chua_speed;
+      }
+    }
+  }
+  EXPECT_GT(moved, 100);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
 
+#include "encodings/directed_graph/chaotic_limits.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/directed_graph/gene_ranges.hpp"
 #include "encodings/directed_graph/genome.hpp"
@@ -134,6 +135,34 @@ TEST(RandomGenome, ConnectionsReachFromRoot) {
     std::vector<bool> reached = reachableNodes(genome);
     EXPECT_TRUE(std::all_of(reached.begin(), reached.end(), [](bool b) { return b; }));
   }
+}
+
+// a chaotic run's random connections all carry chaotic controllers, on at the chance asked,
+// started in Minemonics' box at speeds on both sides of 1; every genome is valid
+TEST(RandomGenome, ChaoticControllersOnEveryJoint) {
+  int connections = 0, on = 0, slow = 0, fast = 0;
+  for (double chance : {1.0, 0.5}) {
+    const GenomeLimits limits = test::chaoticLimits(chance);
+    for (std::uint64_t i = 0; i < 300; ++i) {
+      const Genome g = randomGenome(limits, 61, 0, i);
+      ASSERT_NO_THROW(validateGenome(g, limits));
+      for (const ConnectionGene& c : g.connections) {
+        EXPECT_EQ(c.controller.kind, JointControllerKind::chaotic);
+        if (chance == 1.0) {
+          EXPECT_TRUE(c.controller.enabled);
+          for (double v : c.controller.chua_start)
+            EXPECT_LE(std::abs(v), 0.5);
+          slow += c.controller.chua_speed < 1;
+          fast += c.controller.chua_speed > 1;
+        } else {
+          ++connections;
+          on += c.controller.enabled;
+        }
+      }
+    }
+  }
+  EXPECT_NEAR(static_cast<double>(on) / connections, 0.5, 0.05);
+  EXPECT_NEAR(static_cast<double>(slow) / (slow + fast), 0.5, 0.05);
 }
 
 }  // namespace

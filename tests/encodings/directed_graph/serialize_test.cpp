@@ -3,6 +3,7 @@
 #include "cambrian/rng.hpp"
 
 #include "encodings/directed_graph/catapult_limits.hpp"
+#include "encodings/directed_graph/chaotic_limits.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/directed_graph/genome.hpp"
 
@@ -160,7 +161,7 @@ TEST(SerializeGenome, BadMagic) {
 TEST(SerializeGenome, NewerVersion) {
   std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(GenomeLimits{}, 1));
   bytes[4] = 9;
-  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (2)");
+  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (3)");
   bytes[4] = 0;
   EXPECT_NE(failure(bytes).find("version 0"), std::string::npos);
 }
@@ -213,5 +214,39 @@ TEST(Serialize, TheProjectileTravelsInVersion2) {
   const std::vector<std::uint8_t> cut(bytes.begin(), bytes.end() - 9);
   EXPECT_NE(failure(cut).find("projectile"), std::string::npos) << failure(cut);
 }
+
+// chaotic joint controllers travel in version 3 bytes (their start and speed after the sine's
+// fields); before version 3 the controller byte is 0 or 1, after it 0 to 3
+TEST(Serialize, ChaoticControllersTravelInVersion3) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Genome chaotic = randomGenome(test::chaoticLimits(), seed);
+    const std::vector<std::uint8_t> bytes = serializeGenome(chaotic);
+    if (chaotic.connections.empty()) {
+      EXPECT_EQ(bytes[4], 1);
+      continue;
+    }
+    EXPECT_EQ(bytes[4], 3);
+    EXPECT_EQ(deserializeGenome(bytes.data(), bytes.size()), chaotic);
+  }
+  Genome g;
+  g.nodes.resize(1);
+  g.connections.resize(1);
+  const std::size_t node_bytes = 1 + 24 + 8 + 1 + 24 + 1 + 4 + 4;
+  const std::size_t controller = 8 + 4 + node_bytes + 4 + 2 + 2 + 24 + 24 + 8 + 1 + 1;
+  std::vector<std::uint8_t> bytes = serializeGenome(g);
+  bytes[controller] = 2;
+  EXPECT_NE(failure(bytes).find("connection 0 controller.enabled is 2, expected 0 or 1"),
+            std::string::npos)
+      << failure(bytes);
+  g.connections[0].controller.kind = JointControllerKind::chaotic;
+  bytes = serializeGenome(g);
+  ASSERT_EQ(bytes[4], 3);
+  ASSERT_EQ(bytes[controller], 2);
+  bytes[controller] = 4;
+  EXPECT_NE(failure(bytes).find("connection 0 controller.enabled is 4, expected 0 to 3"),
+            std::string::npos)
+      << failure(bytes);
+}
+
 }  // namespace
 }  // namespace cambrian::graph

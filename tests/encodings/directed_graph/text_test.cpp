@@ -2,6 +2,7 @@
 #include "cambrian/error.hpp"
 
 #include "encodings/directed_graph/catapult_limits.hpp"
+#include "encodings/directed_graph/chaotic_limits.hpp"
 #include "encodings/directed_graph/cuts.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/directed_graph/genome.hpp"
@@ -306,5 +307,27 @@ TEST(Text, TheProjectileIsOneLine) {
   EXPECT_EQ(g.projectile->density, 900);
   EXPECT_EQ(g.projectile->trigger.weight, 1);
 }
+
+// chaotic joint controllers round-trip through the text, and read as written by hand
+TEST(Text, AChaoticControllerIsOneLine) {
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    const Genome genome = randomGenome(test::chaoticLimits(0.5), 52, 0, i);
+    const std::string text = genomeToText(genome);
+    ASSERT_EQ(parseGenomeText(text), genome) << text;
+  }
+  const Genome g = parseGenomeText(
+      "cambrian-genome 2\nnode 0 size 0.2 0.2 0.2 density 1000 joint revolute limit 1 1 1 "
+      "recursion 1\nnode 1 size 0.2 0.2 0.2 density 1000 joint revolute limit 1 1 1 "
+      "recursion 1\nconnection 0 -> 1 position 1 0 0 orientation 0 0 0 scale 1\n"
+      "  controller chaotic amplitude 0.25 offset 0.1 start 0.1 -0.2 0.3 speed 4\nend\n");
+  const JointControllerGene& c = g.connections.at(0).controller;
+  EXPECT_TRUE(c.enabled);
+  EXPECT_EQ(c.kind, JointControllerKind::chaotic);
+  EXPECT_EQ(c.amplitude, 0.25);
+  EXPECT_EQ(c.offset, 0.1);
+  EXPECT_EQ(c.chua_start, (ChuaState{0.1, -0.2, 0.3}));
+  EXPECT_EQ(c.chua_speed, 4);
+}
+
 }  // namespace
 }  // namespace cambrian::graph
