@@ -27,6 +27,10 @@ FORMAT_VERSION = 1
 NO_ID = np.iinfo(np.uint64).max  # parent_a / parent_b when there is no parent
 
 
+# /generations columns added after format version 1 was frozen (older files lack them)
+GENERATION_COLUMNS_ADDED_LATER = ("rank0_cpu_seconds", "rank0_dispatch_seconds", "epoch")
+
+
 class HistoryError(Exception):
     """The file is missing, not HDF5, or not a cambrian history (message names the file)."""
 
@@ -346,6 +350,11 @@ class History:
         Rows end at the first that was never filled in (row i must hold generation i and a write
         time): an append cut short by a kill or a full disk leaves such rows behind."""
         table = self._table("generations")
+        # columns added after format version 1 was frozen read as zeros from older files
+        for name in GENERATION_COLUMNS_ADDED_LATER:
+            if name not in table:
+                kind = np.uint64 if name == "epoch" else np.float64
+                table[name] = np.zeros(len(table["generation"]), dtype=kind)
         complete = (table["generation"] == np.arange(len(table["generation"]))) & (
             table["unix_time"] > 0
         )

@@ -57,6 +57,7 @@ def test_generations_match_the_tsv_table(history):
         assert g["best"][i] == float(row["best"])
         assert g["median"][i] == float(row["median"])
         assert g["best_id"][i] == int(row["best_id"])
+        assert g["epoch"][i] == int(row["epoch"]) == 0
     assert np.all(g["q25"] <= g["median"]) and np.all(g["median"] <= g["q75"])
     assert np.all((g["distinct_genomes"] >= 1) & (g["distinct_genomes"] <= POPULATION))
     # every generation of this run is followed by a checkpoint (run.checkpoint_every = 1)
@@ -67,6 +68,14 @@ def test_generations_match_the_tsv_table(history):
     assert g["wall_seconds"][-1] >= g["evaluation_span_seconds"][-1] + g["checkpoint_seconds"][-1]
     assert np.all(g["wall_seconds"][1:] >= g["checkpoint_seconds"][:-1])
     assert history.units("generations", "wall_seconds") == "s"
+
+
+def test_columns_added_later_read_as_zeros_from_older_files():
+    older = os.path.join(HERE, "..", "..", "tests", "store", "data", "v1_run", "history.h5")
+    with ch.History(older) as h:
+        g = h.generations()
+    assert len(g["generation"]) > 0
+    assert list(g["epoch"]) == [0] * len(g["generation"])
 
 
 def test_individuals_match_the_tsv_table(history):

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "evolution/competitive_ranking.hpp"
+#include "evolution/epochs.hpp"
 #include "evolution/evolution_settings.hpp"
 #include "options.hpp"
 #include "parallel/mpi_context.hpp"
@@ -130,19 +131,29 @@ void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
   s.run.run_only = schema.runOnlyKeys();
   s.run.measures = s.worker.creature.task().measures();
   s.run.repeatable = s.worker.creature.task().repeatable();
-  // a competitive ranking ranks measures the task reports
-  for (const std::string& text : s.evolution.ranking) {
-    const RankedMeasure ranked = parseRankedMeasure(text, "evolution.ranking");
-    const auto& measures = s.run.measures;
-    if (std::none_of(measures.begin(), measures.end(),
-                     [&](const MeasureInfo& m) { return m.name == ranked.measure; })) {
-      std::string names;
-      for (const MeasureInfo& m : measures)
-        names += (names.empty() ? "" : ", ") + m.name;
-      throw ConfigError("evolution.ranking = " + text + ": task " +
-                        s.worker.creature.task().name() + " has no measure '" + ranked.measure +
-                        "' (its measures: " + names + ")");
-    }
+  // a competitive ranking, and every epoch's ranking and condition, name measures the task
+  // reports
+  const auto& measures = s.run.measures;
+  auto requireMeasure = [&](const std::string& name, const std::string& key,
+                            const std::string& text) {
+    if (std::any_of(measures.begin(), measures.end(),
+                    [&](const MeasureInfo& m) { return m.name == name; }))
+      return;
+    std::string names;
+    for (const MeasureInfo& m : measures)
+      names += (names.empty() ? "" : ", ") + m.name;
+    throw ConfigError(key + " = " + text + ": task " + s.worker.creature.task().name() +
+                      " has no measure '" + name + "' (its measures: " + names + ")");
+  };
+  for (const std::string& text : s.evolution.ranking)
+    requireMeasure(parseRankedMeasure(text, "evolution.ranking").measure, "evolution.ranking",
+                   text);
+  for (const std::string& text : s.evolution.epochs) {
+    const Epoch epoch = parseEpoch(text, "evolution.epochs");
+    for (const RankedMeasure& ranked : epoch.ranking)
+      requireMeasure(ranked.measure, "evolution.epochs", text);
+    if (epoch.until == Epoch::Until::reached)
+      requireMeasure(epoch.measure, "evolution.epochs", text);
   }
 
   // seed genomes (rank 0 only), checked against the encoding's limits

@@ -44,6 +44,7 @@ ChuaOscillators::ChuaOscillators(std::vector<ChuaOscillator> oscillators, ChuaCi
                       std::to_string(circuit.integration_step) + " must be positive and finite");
   }
   states_.resize(oscillators_.size());
+  grid_steps_.resize(oscillators_.size());
   signals_.resize(3 * oscillators_.size());
   reset();
 }
@@ -53,6 +54,8 @@ void ChuaOscillators::step(std::span<const double>, std::span<double> drives) {
   auto system = [this](const ChuaState& u, ChuaState& dudt, double) {
     dudt = chuaDerivative(circuit_, u);
   };
+  ++steps_;
+  const double seconds = static_cast<double>(steps_) * time_step_;
   for (std::size_t e = 0; e < oscillators_.size(); ++e) {
     const ChuaOscillator& o = oscillators_[e];
     if (!o.enabled) {
@@ -63,22 +66,22 @@ void ChuaOscillators::step(std::span<const double>, std::span<double> drives) {
     ChuaState& u = states_[e];
     if (e < drives.size())
       drives[e] = o.amplitude * u[2] + o.offset;
-    // the circuit time this step spans, in equal RK4 steps of at most integration_step
-    const double span = o.speed * circuit_.rate * time_step_;
-    if (span > 0) {
-      const double steps = std::ceil(span / circuit_.integration_step);
-      const double h = span / steps;
-      for (double s = 0; s < steps; ++s)
-        stepper.do_step(system, u, 0.0, h);
-    }
+    // on along the circuit's own grid to where the next step starts (a grid point the rounding
+    // of the product puts a hair late still counts as reached)
+    const double due =
+        std::floor(o.speed * circuit_.rate * seconds / circuit_.integration_step + 1e-9);
+    for (; static_cast<double>(grid_steps_[e]) < due; ++grid_steps_[e])
+      stepper.do_step(system, u, 0.0, circuit_.integration_step);
     for (int k = 0; k < 3; ++k)
       signals_[3 * e + k] = u[k];
   }
 }
 
 void ChuaOscillators::reset() {
+  steps_ = 0;
   for (std::size_t e = 0; e < oscillators_.size(); ++e) {
     states_[e] = oscillators_[e].start;
+    grid_steps_[e] = 0;
     for (int k = 0; k < 3; ++k)
       signals_[3 * e + k] = states_[e][k];
   }

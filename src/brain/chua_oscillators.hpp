@@ -27,7 +27,7 @@ struct ChuaCircuit {
   double limit = 2;           ///< the x the limiter holds the circuit below
   double limit_softness = 7;  ///< how sharply it does
   double rate = 0.24;         ///< circuit time per simulated second at speed 1
-  double integration_step = 0.001;  ///< largest circuit-time step of the RK4 integration
+  double integration_step = 0.001;  ///< the circuit-time step of the RK4 integration
   friend bool operator==(const ChuaCircuit&, const ChuaCircuit&) = default;
 };
 
@@ -55,9 +55,10 @@ class ChuaOscillatorsPlan : public ControllerPlan {
                                     std::size_t effectors) const override;
 };
 
-/// The running oscillators; read no sensors. Each step first drives from the present state, then
-/// advances each circuit by speed * rate * time_step of circuit time in equal RK4 steps no longer
-/// than integration_step.
+/// The running oscillators; read no sensors. Each circuit runs on its own grid of RK4 steps of
+/// integration_step circuit time from its start, so its states do not depend on the physics
+/// step: at simulated time t it has taken floor(speed * rate * t / integration_step) of them, and
+/// each controller step drives from the state it has at the step's start.
 class ChuaOscillators : public Controller {
  public:
   ChuaOscillators(std::vector<ChuaOscillator> oscillators, ChuaCircuit circuit, double time_step);
@@ -70,6 +71,8 @@ class ChuaOscillators : public Controller {
   std::vector<ChuaOscillator> oscillators_;
   ChuaCircuit circuit_;
   double time_step_ = 0;
+  std::uint64_t steps_ = 0;                // controller steps taken
+  std::vector<std::uint64_t> grid_steps_;  // RK4 steps each circuit has taken
   std::vector<ChuaState> states_;
   std::vector<double> signals_;
 };

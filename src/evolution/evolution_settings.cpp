@@ -5,6 +5,7 @@
 
 #include "core/settings.hpp"
 #include "evolution/competitive_ranking.hpp"
+#include "evolution/epochs.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -93,6 +94,18 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
   s.addCheck([&e] {
     for (const std::string& text : e.ranking)
       parseRankedMeasure(text, "evolution.ranking");
+  });
+  s.add("evolution.epochs", e.epochs,
+        "epochs (Minemonics): each RANKING[@CONDITION], RANKING the measures "
+        "NAME[:WEIGHT[:higher|lower]] joined by + and ranked as evolution.ranking, CONDITION "
+        "N (generations) or NAME>=X / NAME<=X (reached by the best of a generation); every epoch "
+        "but the last has one (empty: one epoch, evolution.ranking or the task's fitness)");
+  s.addCheck([&e] {
+    parseEpochs(e.epochs, "evolution.epochs");
+    if (!e.epochs.empty() && !e.ranking.empty())
+      throw ConfigError(
+          "evolution.epochs and evolution.ranking are both set: give the ranking of "
+          "each epoch in evolution.epochs");
   });
   s.addSeed("run.seed", e.seed, "run seed, 0..2^64-1 (same seed, same run)");
 

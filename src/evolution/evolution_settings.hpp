@@ -47,6 +47,9 @@ struct EvolutionSettings {
   /// Minemonics' competitive ranking: measures as NAME[:WEIGHT[:higher|lower]]; when given, a
   /// generation's fitness is each individual's weighted rank points (competitive_ranking.hpp)
   std::vector<std::string> ranking;
+  /// Minemonics' epochs: each RANKING[@CONDITION] (epochs.hpp); when given, each generation is
+  /// rated by its epoch's ranking (instead of `ranking`)
+  std::vector<std::string> epochs;
   std::uint64_t seed = 1;  ///< run seed: keys every random stream of the run
 
   /// Declares the [evolution] keys (and run.seed), bound to this object, with their ranges;

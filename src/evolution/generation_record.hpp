@@ -27,7 +27,8 @@ struct GenerationRecord {
   double worker_idle_seconds = 0;      ///< workers * span - busy
   double checkpoint_seconds = 0;       ///< writing the checkpoint after it (0: none written)
   double wall_seconds = 0;             ///< whole generation on rank 0
-  double unix_time = 0;  ///< seconds since 1970-01-01 UTC when it went into the history (0: not)
+  double unix_time = 0;     ///< seconds since 1970-01-01 UTC when it went into the history (0: not)
+  std::uint64_t epoch = 0;  ///< the epoch it was rated in (evolution.epochs, from 0; 0 without)
   /// Evaluations per second of the evaluation span (0 when the span is 0).
   double evaluationsPerSecond() const;
   /// Share of worker time spent evaluating during the span, 0..1.

@@ -9,6 +9,7 @@
 #include "core/test_kill.hpp"
 #include "evolution/breeder.hpp"
 #include "evolution/competitive_ranking.hpp"
+#include "evolution/epochs.hpp"
 #include "evolution/outcome_reuse.hpp"
 #include "evolution/statistics.hpp"
 #include "physics/physics_settings.hpp"
@@ -89,12 +90,15 @@ class EvolutionRun {
     setTestKillPoint(run.test_kill_at);
     for (const std::string& text : settings.ranking)
       ranking_.push_back(parseRankedMeasure(text, "evolution.ranking"));
+    epochs_ = parseEpochs(settings.epochs, "evolution.epochs");
     if (run.viable)
       breeder_.setViabilityCheck(run.viable);
   }
 
   RunResult run() {
     openOutput();
+    if (!epochs_.empty() && start_ < total_)
+      announceEpoch();
     std::string stop_reason;
     std::uint64_t g = start_;
     for (; g < total_; ++g) {
@@ -216,6 +220,16 @@ class EvolutionRun {
     breeder_.setNextId(checkpoint.next_id);
     digest_ = RunDigest(checkpoint.digest);
     last_ = std::move(checkpoint.population);
+    // the epoch the next generation is rated in: the last one's (the history's rows say which
+    // and since when), moved on if its condition held after it
+    if (!epochs_.empty() && !kept.generations.empty()) {
+      EpochPlace place{static_cast<std::size_t>(kept.generations.back().epoch), 0};
+      for (const GenerationRecord& row : kept.generations) {
+        if (row.epoch != place.epoch)
+          place.first_generation = row.generation + 1;
+      }
+      epoch_place_ = nextEpochPlace(epochs_, place, *last_);
+    }
     checkpointed_ = start_;
     result_.resumed = true;
   }
@@ -375,9 +389,12 @@ class EvolutionRun {
       clearLiveLine();
     }
     copySiblingOutcomes(population, reuse);
-    // Minemonics' competitive ranking: the fitness is the individual's place in its generation
-    if (!ranking_.empty())
-      rankCompetitively(population.individuals, ranking_);
+    // Minemonics' competitive ranking: the fitness is the individual's place in its generation,
+    // by the ranking of the run or of the generation's epoch
+    const std::vector<RankedMeasure>& ranking =
+        epochs_.empty() ? ranking_ : epochs_[epoch_place_.epoch].ranking;
+    if (!ranking.empty())
+      rankCompetitively(population.individuals, ranking);
 
     // summarise in id order (the times so far; closed when the next generation starts)
     GenerationRecord record;
@@ -390,6 +407,7 @@ class EvolutionRun {
     record.worker_busy_seconds = span.busy_seconds;
     record.worker_idle_seconds =
         std::max(0.0, span.workers * span.span_seconds - span.busy_seconds);
+    record.epoch = epoch_place_.epoch;
     for (const Individual& individual : population.individuals)
       result_.individuals.push_back(tableRecord(individual));
     closeTimes(record);
@@ -399,6 +417,22 @@ class EvolutionRun {
     walls_.push_back(record.wall_seconds);
     pending_ = Pending{result_.generations.size() - 1, breeder_.nextId()};
     progress(g, record, reuse.from_parents + reuse.siblings.size());
+
+    // the next generation's epoch
+    const EpochPlace next = nextEpochPlace(epochs_, epoch_place_, *last_);
+    const bool moved = next != epoch_place_;
+    epoch_place_ = next;
+    if (moved && g + 1 < total_)
+      announceEpoch();
+  }
+
+  // "epoch 2/3 (RANKING@CONDITION) from generation 11" (generations counted from 1, as above)
+  void announceEpoch() const {
+    if (run_.quiet)
+      return;
+    out_ << "epoch " << epoch_place_.epoch + 1 << "/" << epochs_.size() << " ("
+         << settings_.epochs.at(epoch_place_.epoch) << ") from generation "
+         << epoch_place_.first_generation + 1 << std::endl;
   }
 
   // the live line within generation g, rewritten in place at most every 0.25 s (and at the
@@ -462,6 +496,8 @@ class EvolutionRun {
   std::ostream& out_;
   Breeder breeder_;
   std::vector<RankedMeasure> ranking_;  // evolution.ranking, parsed (empty: the task's fitness)
+  std::vector<Epoch> epochs_;           // evolution.epochs, parsed (empty: one epoch, ranking_)
+  EpochPlace epoch_place_;              // the epoch the next generation is rated in
   const std::uint64_t total_;
   double cpu_start_ = processCpuSeconds();
   Clock::time_point run_start_ = Clock::now();

@@ -113,6 +113,8 @@ const std::vector<Column>& generationColumns() {
       {"checkpoint_seconds", f64, 1, "s", "time writing the checkpoint (0: none written)"},
       {"wall_seconds", f64, 1, "s", "the whole generation on rank 0"},
       {"unix_time", f64, 1, "s since 1970-01-01T00:00:00Z", "wall clock when the row was written"},
+      {"epoch", u64, 1, "1", "the epoch the generation was rated in (evolution.epochs), from 0",
+       true},
   };
   return columns;
 }
@@ -241,6 +243,7 @@ void forEachGenerationField(G& g, Visit visit) {
   visit("checkpoint_seconds", g.checkpoint_seconds);
   visit("wall_seconds", g.wall_seconds);
   visit("unix_time", g.unix_time);
+  visit("epoch", g.epoch);
 }
 
 double unixNow() {

@@ -49,6 +49,10 @@ void EpisodeSettings::declareSettings(SettingsSchema& s) {
           },
           "must be >= task.settle_time, task.resettle_time and task.rest_time when "
           "task.rest_check is on");
+  s.add("task.min_parts", t.min_parts,
+        "a creature of fewer parts is not evaluated: status invalid_body, the worst fitness "
+        "(Minemonics: 2, it discards creatures of 0 or 1 limb)")
+      .require([&t] { return t.min_parts >= 1 && t.min_parts <= 1000; }, "must be in 1..1000");
 }
 
 Episode::Episode(const Creature& creature, const Environment& environment,

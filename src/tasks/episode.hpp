@@ -36,6 +36,9 @@ struct EpisodeSettings {
   double rest_speed = 0.01;
   double rest_time = 0.5;        ///< s of consecutive steps at rest
   double settle_max_time = 5.0;  ///< s, the longest a settle phase may last with rest_check
+  /// Fewer parts and a creature is not evaluated (invalid_body): Minemonics discards creatures
+  /// of 0 or 1 limb ("degenerate and can not move at all").
+  int min_parts = 1;
 
   /// Declares the keys, bound to this object, with their ranges.
   void declareSettings(SettingsSchema& schema);

@@ -97,8 +97,18 @@ Outcome evaluate(const Genotype& genome, const CreatureSettings& settings, std::
       }
       if (valid) {
         Creature creature = encoding.develop(genome);
-        outcome = creature.body.parts.empty() ? failure(EvalStatus::invalid_body, "no parts")
-                                              : evaluateBody(creature, settings, start, observer);
+        const std::size_t parts = creature.body.parts.size();
+        const auto least = static_cast<std::size_t>(settings.episode().min_parts);
+        if (parts == 0) {
+          outcome = failure(EvalStatus::invalid_body, "no parts");
+        } else if (parts < least) {
+          outcome = failure(EvalStatus::invalid_body,
+                            std::to_string(parts) + " part" + (parts == 1 ? "" : "s") +
+                                ", fewer than task.min_parts = " + std::to_string(least));
+          outcome.parts = static_cast<int>(parts);
+        } else {
+          outcome = evaluateBody(creature, settings, start, observer);
+        }
       }
     }
   } catch (const std::exception& e) {

@@ -343,6 +343,77 @@ TEST(EvolveCommand, ARankedRunStoresEachIndividualsRankPoints) {
       << bad.output;
 }
 
+// Minemonics' epochs: two generations ranked by average velocity, then by maximum height; the
+// history says each generation's epoch; a run killed in the first generation of the second
+// epoch (its checkpoint the last of the first) resumes into the second epoch and ends as the
+// straight run does
+TEST(EvolveCommand, EpochsRateEachGenerationByTheirJuriesAcrossKillAndResume) {
+  const std::string command =
+      "evolve --task.name juries --task.evaluation_time 1 --evolution.population 8 "
+      "--evolution.generations 4 --evolution.epochs average_velocity@2 "
+      "--evolution.epochs maximum_height --run.checkpoint_every 1 --seed 6 --out ";
+  const std::string dir = freshDir("epochs");
+  auto straight = runCambrian(command + dir);
+  ASSERT_EQ(straight.exit_code, 0) << straight.output;
+  EXPECT_NE(straight.output.find("epoch 1/2 (average_velocity@2) from generation 1"),
+            std::string::npos)
+      << straight.output;
+  EXPECT_NE(straight.output.find("epoch 2/2 (maximum_height) from generation 3"), std::string::npos)
+      << straight.output;
+  HistoryReader reader(dir + "/history.h5");
+  std::vector<std::uint64_t> epochs;
+  for (const GenerationRecord& row : reader.generations())
+    epochs.push_back(row.epoch);
+  EXPECT_EQ(epochs, (std::vector<std::uint64_t>{0, 0, 1, 1}));
+  // each generation's fitness is its epoch's rank points
+  const std::vector<Individual> rows = reader.individuals();
+  for (const Individual& row : rows) {
+    if (row.outcome.status != EvalStatus::ok)
+      continue;
+    const char* measure = row.generation < 2 ? "average_velocity" : "maximum_height";
+    double points = 0;
+    for (const Individual& other : rows) {
+      if (other.generation == row.generation && other.outcome.status == EvalStatus::ok)
+        points += other.outcome.measure(measure) < row.outcome.measure(measure);
+    }
+    EXPECT_EQ(row.fitness(), points) << "individual " << row.id;
+  }
+
+  const std::string killed_dir = freshDir("epochs_killed");
+  auto killed = runCambrian(command + killed_dir + " --run.test_kill_at evaluation:2");
+  EXPECT_NE(killed.exit_code, 0) << killed.output;
+  auto resumed = runCambrian(command + killed_dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("at generation 2"), std::string::npos) << resumed.output;
+  EXPECT_NE(resumed.output.find("epoch 2/2 (maximum_height) from generation 3"), std::string::npos)
+      << resumed.output;
+  const std::string digest = test::lineStartingWith(straight.output, "digest ");
+  ASSERT_FALSE(digest.empty());
+  EXPECT_EQ(test::lineStartingWith(resumed.output, "digest "), digest);
+  std::vector<std::uint64_t> resumed_epochs;
+  for (const GenerationRecord& row : HistoryReader(killed_dir + "/history.h5").generations())
+    resumed_epochs.push_back(row.epoch);
+  EXPECT_EQ(resumed_epochs, epochs);
+
+  // an epoch naming a measure the task lacks, and epochs beside evolution.ranking, are refused
+  auto bad = runCambrian(
+      "evolve --task.name juries --evolution.epochs speed@2 "
+      "--evolution.epochs maximum_height --quiet --out " +
+      freshDir("epochs_bad"));
+  EXPECT_EQ(bad.exit_code, 3) << bad.output;
+  EXPECT_NE(bad.output.find("evolution.epochs = speed@2: task juries has no measure 'speed'"),
+            std::string::npos)
+      << bad.output;
+  auto both = runCambrian(
+      "evolve --task.name juries --evolution.epochs maximum_height "
+      "--evolution.ranking average_velocity --quiet --out " +
+      freshDir("epochs_both"));
+  EXPECT_EQ(both.exit_code, 3) << both.output;
+  EXPECT_NE(both.output.find("evolution.epochs and evolution.ranking are both set"),
+            std::string::npos)
+      << both.output;
+}
+
 TEST(EvolveCommand, HelpShowsDefaultsAsWritten) {
   auto help = runCambrian("evolve --help");
   EXPECT_EQ(help.exit_code, 0);

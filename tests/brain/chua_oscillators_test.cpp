@@ -2,6 +2,8 @@
 
 #include "cambrian/error.hpp"
 
+#include "brain/allocation_counter.hpp"
+
 #include <boost/numeric/odeint.hpp>
 #include <gtest/gtest.h>
 
@@ -62,7 +64,8 @@ TEST(ChuaCircuit, TheDerivativeIsChuasEquations) {
 
 // the controller's drive follows z of Chua's equations integrated by an adaptive Dormand-Prince
 // to 1e-13, within RK4's error at steps of 0.001 (fourth order between the diode's breakpoints,
-// second order across them): one second at speed 5 (1.2 units of circuit time), 240 steps
+// second order across them): one second at speed 5 (1.2 units of circuit time), 240 steps, each
+// driving from the circuit's state at its start, 5 grid steps (0.005 circuit time) apart
 TEST(ChuaOscillators, TheDriveFollowsChuasEquations) {
   const ChuaState start{0.3, -0.2, 0.1};
   ChuaOscillators controller = single(start, 5.0, 1.0 / 240);
@@ -70,12 +73,12 @@ TEST(ChuaOscillators, TheDriveFollowsChuasEquations) {
   using namespace boost::numeric::odeint;
   auto stepper = make_dense_output(1e-13, 1e-13, runge_kutta_dopri5<ChuaState>());
   ChuaState u = start;
-  const double per_step = 5.0 * 0.24 / 240;
+  const double per_step = 0.005;
   for (int s = 0; s < 240; ++s) {
-    // the drive of step s is z at the state it starts with
     ASSERT_NEAR(got[s], u[2], 1e-5) << "step " << s;
     integrate_adaptive(stepper, chuaEquations, u, s * per_step, (s + 1) * per_step, per_step);
   }
+  EXPECT_EQ(controller.signals().size(), 3u);
   // and it moved: z went somewhere in that time
   EXPECT_GT(std::abs(got.back() - got.front()), 0.05);
 }
@@ -125,15 +128,21 @@ TEST(ChuaOscillators, TheLimiterHoldsTheCircuitOnOneScroll) {
   EXPECT_GT(highest_x - lowest_x, 1.0);  // it still swings
 }
 
-// circuit time is speed * rate * simulated time, whatever the step: 1/120 s and 1/480 s steps
-// reach the same state after half a second, within RK4's error at steps of 0.001
-TEST(ChuaOscillators, CircuitTimeDoesNotDependOnTheTimeStep) {
+// each circuit runs on its own grid, whatever the physics step: 1/120 s and 1/480 s steps reach
+// the same state, bit for bit, after half a second (0.84 units of circuit time, 840 grid steps),
+// and at speed 0.5 a 1/240 s step advances the circuit every other step or so (0.0005 a step)
+TEST(ChuaOscillators, TheCircuitDoesNotDependOnTheTimeStep) {
   ChuaOscillators coarse = single({0.2, 0.1, -0.1}, 7.0, 1.0 / 120);
   ChuaOscillators fine = single({0.2, 0.1, -0.1}, 7.0, 1.0 / 480);
   drives(coarse, 60);
   drives(fine, 240);
   for (int k = 0; k < 3; ++k)
-    EXPECT_NEAR(coarse.signals()[k], fine.signals()[k], 1e-7) << k;
+    EXPECT_EQ(coarse.signals()[k], fine.signals()[k]) << k;
+  ChuaOscillators slow = single({0.2, 0.1, -0.1}, 0.5, 1.0 / 240);
+  const std::vector<double> z = drives(slow, 4);
+  EXPECT_EQ(z[0], z[1]);  // 0.0005 circuit time: no grid step yet
+  EXPECT_NE(z[1], z[2]);  // 0.001: the first
+  EXPECT_EQ(z[2], z[3]);
 }
 
 // amplitude and offset scale and shift z; a disabled oscillator drives 0; reset starts over
@@ -152,6 +161,11 @@ TEST(ChuaOscillators, AmplitudeOffsetDisabledAndReset) {
   controller->step({}, second);
   EXPECT_EQ(second, first);
   EXPECT_EQ(plan.kind(), "chaotic");
+  // stepping allocates nothing (controllers run inside the physics loop)
+  const long allocations = allocationCount();
+  for (int s = 0; s < 100; ++s)
+    controller->step({}, second);
+  EXPECT_EQ(allocationCount(), allocations);
   EXPECT_THROW(plan.build(1.0 / 240, 0, 3), Error);
   EXPECT_THROW(ChuaOscillators({}, ChuaCircuit{}, 0.0), ConfigError);
 }

@@ -131,6 +131,8 @@ case $mode in
       "${common[@]}" --seed 16
     evolve walk_chaotic --config "$source_dir/jobs/experiments/minemonics/walk-chaotic.ini" \
       "${common[@]}" --seed 17
+    evolve epochs --task.name juries --evolution.epochs maximum_height@1 \
+      --evolution.epochs average_velocity+ground_contact_ratio:0.5:lower "${common[@]}" --seed 18
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do

@@ -4,6 +4,7 @@
 #include "cambrian/evaluate.hpp"
 
 #include "cambrian/encodings.hpp"
+#include "cambrian/error.hpp"
 
 #include "encodings/directed_graph/encoding.hpp"
 #include "physics/physics_settings.hpp"
@@ -154,6 +155,23 @@ TEST(Evaluate, InvalidGenome) {
   EXPECT_EQ(outcome.status, EvalStatus::invalid_body);
   EXPECT_EQ(outcome.fitness, kWorstFitness);
   EXPECT_NE(outcome.message.find("dimensions"), std::string::npos) << outcome.message;
+}
+
+// task.min_parts (Minemonics discards creatures of 0 or 1 limb): the single block is not
+// evaluated under 2, with the worst fitness and a message naming the setting; the pole (two
+// parts) is, and so is the block under the default 1
+TEST(Evaluate, FewerPartsThanTaskMinPartsIsNotEvaluated) {
+  const Outcome block =
+      evaluateGraph(creature("single_block.genome"), shortWalk({{"task.min_parts", "2"}}));
+  EXPECT_EQ(block.status, EvalStatus::invalid_body);
+  EXPECT_EQ(block.fitness, kWorstFitness);
+  EXPECT_EQ(block.steps, 0u);
+  EXPECT_EQ(block.parts, 1);
+  EXPECT_EQ(block.message, "1 part, fewer than task.min_parts = 2");
+  const Outcome pole = evaluateGraph(creature("pole.genome"), shortWalk({{"task.min_parts", "2"}}));
+  EXPECT_EQ(pole.status, EvalStatus::ok) << pole.message;
+  EXPECT_EQ(evaluateGraph(creature("single_block.genome"), shortWalk()).status, EvalStatus::ok);
+  EXPECT_THROW(settingsWith({{"task.min_parts", "0"}}), ConfigError);
 }
 
 // an overlapping body gets self_penetration
