@@ -107,13 +107,13 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
     w.u8(c.reflection);
     w.u8(c.terminal_only ? 1 : 0);
     // bit 0: on; bit 1 (version 3): chaotic, its circuit's start and speed after the sine's
-    const bool chaotic = c.controller.kind == JointControllerKind::chaotic;
-    w.u8(static_cast<std::uint8_t>((c.controller.enabled ? 1 : 0) | (chaotic ? 2 : 0)));
+    const bool chua = c.controller.kind == JointControllerKind::chaotic;
+    w.u8(static_cast<std::uint8_t>((c.controller.enabled ? 1 : 0) | (chua ? 2 : 0)));
     w.f64(c.controller.amplitude);
     w.f64(c.controller.frequency);
     w.f64(c.controller.phase);
     w.f64(c.controller.offset);
-    if (chaotic) {
+    if (chua) {
       for (double v : c.controller.chua_start)
         w.f64(v);
       w.f64(c.controller.chua_speed);
