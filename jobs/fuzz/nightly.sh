@@ -65,16 +65,16 @@ for target in "${targets[@]}"; do
     [ -n "$library" ] || continue
     # replay it once to see where it fails (fork mode also saves inputs that fail only in
     # their job's context, such as an empty one after a job's endless loop)
-    # (a malloc limit, so that an out-of-memory input shows the stack of its large allocation)
-    if "$source_dir/build/asan/tests/fuzz/fuzz_$target" -timeout=10 -rss_limit_mb=2048 \
-      -malloc_limit_mb=512 "$finding" > "$finding.replay.txt" 2>&1; then
-      not_reproduced=$((not_reproduced + 1))
-    elif bash tests/fuzz/library_fault.sh "$finding.replay.txt" "$library" > /dev/null; then
-      in_library=$((in_library + 1))
-    fi
+    replayed=0
+    bash tests/fuzz/replay_finding.sh "$source_dir/build/asan/tests/fuzz/fuzz_$target" \
+      "$finding" "$library" || replayed=$?
+    case $replayed in
+      0) in_library=$((in_library + 1)) ;;
+      2) not_reproduced=$((not_reproduced + 1)) ;;
+    esac
   done < <(find "$out/crashes/$target" -maxdepth 1 -type f \
     \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) \
-    ! -name '*.replay.txt' -print0)
+    ! -name '*.replay*.txt' -print0)
   printf '%-16s %14s %8s %12s %16s\n' "$target" "${execs:-?}" "$crashes" "$in_library" \
     "$not_reproduced"
   found=$((found + crashes - in_library - not_reproduced))
