@@ -969,6 +969,20 @@ double FeatherstoneWorld::jointPosition(int part, int dof) const {
   return link < 0 ? 0.0 : bullet_->body->getJointPos(link);
 }
 
+JointSpeed FeatherstoneWorld::fastestJoint() const {
+  // every degree of freedom is one Bullet link (virtual links of multi-DoF joints included)
+  JointSpeed fastest;
+  for (std::size_t i = 1; i < dof_link_.size(); ++i) {
+    for (int d = 0; d < 3; ++d) {
+      int link = dof_link_[i][static_cast<std::size_t>(d)];
+      double speed = link < 0 ? 0.0 : std::abs(bullet_->body->getJointVel(link));
+      if (speed > fastest.speed)
+        fastest = {static_cast<int>(i), d, speed};
+    }
+  }
+  return fastest;
+}
+
 Vec3 FeatherstoneWorld::directionInPart(int part, Vec3 point) const {
   const btTransform& frame = bullet_->colliders[part]->getWorldTransform();
   btVector3 to_point = frame.getBasis().transpose() * (toBt(point) - frame.getOrigin());

@@ -39,6 +39,7 @@ class FeatherstoneWorld : public World {
   Vec3 partPosition(int part) const override;
   Transform partPose(int part) const override;
   double jointPosition(int part, int dof) const override;
+  JointSpeed fastestJoint() const override;
   const std::vector<std::uint8_t>& contacts() override;
   const std::vector<std::uint8_t>& groundContacts() override;
   Vec3 directionInPart(int part, Vec3 point) const override;

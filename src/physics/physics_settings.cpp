@@ -86,6 +86,10 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "a part farther than this from its start has exploded, m")
       .require([&p] { return p.max_displacement > 0 && std::isfinite(p.max_displacement); },
                "must be > 0 and finite");
+  s.add("physics.max_joint_speed", p.max_joint_speed,
+        "a joint turning faster than this has exploded, rad/s (sliders m/s; 0 = not watched)")
+      .require([&p] { return p.max_joint_speed >= 0 && p.max_joint_speed < 100; },
+               "must be in [0, 100) (0 = not watched; Bullet clamps joint speeds at 100)");
   s.add("physics.penetration_tolerance", p.penetration_tolerance,
         "overlap allowed between non-adjacent parts at birth, m")
       .require(

@@ -71,8 +71,11 @@ struct PhysicsSettings {
   /// in an iteration (Bullet's least-squares residual threshold); 0: always solver_iterations.
   /// 1e-4: a resting contact keeps at most 0.1 mm/s, so a body at rest creeps under 1 mm in 10 s
   double solver_tolerance = 1e-4;
-  double max_speed = 50;                 ///< m / s: any part faster has exploded
-  double max_displacement = 100;         ///< m: any part farther from its start has exploded
+  double max_speed = 50;          ///< m / s: any part faster has exploded
+  double max_displacement = 100;  ///< m: any part farther from its start has exploded
+  /// rad/s (prismatic: m/s): a joint turning faster has exploded (Minemonics discards creatures
+  /// of "very high joint velocities"); 0: not watched. Bullet clamps every joint's speed at 100.
+  double max_joint_speed = 0;
   double penetration_tolerance = 0.002;  ///< m of overlap allowed between non-adjacent parts at
                                          ///< birth
   double max_wall_seconds = 60;          ///< wall-clock bound of one evaluation (0 = none)

@@ -136,6 +136,19 @@ void Simulation::monitor() {
   }
   fastest_part_speed_ = std::sqrt(largest_step_sq) / settings_.time_step;
 
+  // a joint turning implausibly fast (Minemonics' discard)
+  if (settings_.max_joint_speed > 0) {
+    const JointSpeed joint = world_->fastestJoint();
+    if (joint.speed > settings_.max_joint_speed) {
+      std::ostringstream message;
+      message << "the joint of part " << joint.part << " (degree of freedom " << joint.dof
+              << ") moved at " << joint.speed << " rad/s (physics.max_joint_speed "
+              << settings_.max_joint_speed << ") at step " << steps_;
+      fail(EvalStatus::exploded, message.str());
+      return;
+    }
+  }
+
   // what the creature holds or has thrown: watched as a part is, except for the distance (it
   // may go as far as it is thrown)
   for (std::size_t h = 0; h < previous_held_.size(); ++h) {

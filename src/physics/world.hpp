@@ -20,6 +20,13 @@
 
 namespace cambrian {
 
+/// A joint degree of freedom and how fast it moves.
+struct JointSpeed {
+  int part = 0;      ///< the part the joint attaches to its parent
+  int dof = 0;       ///< its degree of freedom
+  double speed = 0;  ///< |velocity|, rad/s (prismatic: m/s)
+};
+
 /// One creature in a world of its own. Single-threaded; nothing shared between instances.
 class World {
  public:
@@ -43,6 +50,9 @@ class World {
   /// Position of degree of freedom `dof` of the joint between `part` and its parent (radians,
   /// prismatic: m); 0 for a fixed joint.
   virtual double jointPosition(int part, int dof) const = 0;
+  /// The joint degree of freedom turning fastest after the last step: its part, dof and speed
+  /// (rad/s, prismatic: m/s); speed 0 for a body without joints.
+  virtual JointSpeed fastestJoint() const = 0;
   /// Per part, what touches it after the last step: bit f set when something touches its face f
   /// (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z, the face a contact point lies nearest to); 0 when
   /// nothing touches it.

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -189,6 +190,38 @@ TEST(Simulation, ExplosionIsCaught) {
   EXPECT_EQ(simulation.status(), EvalStatus::exploded) << statusName(simulation.status());
   EXPECT_NE(simulation.message().find("physics.max_speed"), std::string::npos)
       << simulation.message();
+}
+
+// a joint turning faster than physics.max_joint_speed ends the evaluation as exploded (Minemonics'
+// discard), naming the joint; below the limit nothing happens. The saturated motor drives the
+// hinge towards physics.motor_speed = 10 rad/s until the joint limit stops it.
+TEST(Simulation, AJointFasterThanMaxJointSpeedHasExploded) {
+  TestCreature creature = hinged(1.0);
+  PhysicsSettings settings;
+  settings.strength_per_area = 1e6;
+  settings.motor_speed = 10;
+  settings.max_joint_speed = 11;
+  Sim calm(creature, settings);
+  double fastest = 0;
+  for (int s = 0; s < 240; ++s) {
+    calm.simulation.step(true);
+    fastest = std::max(fastest, calm.simulation.world().fastestJoint().speed);
+  }
+  EXPECT_EQ(calm.simulation.status(), EvalStatus::ok) << calm.simulation.message();
+  EXPECT_GT(fastest, 5);
+  EXPECT_LE(fastest, 11);
+  EXPECT_EQ(calm.simulation.world().fastestJoint().part, 1);
+
+  settings.max_joint_speed = 5;
+  Sim fast(creature, settings);
+  for (int s = 0; s < 240 && fast.simulation.status() == EvalStatus::ok; ++s)
+    fast.simulation.step(true);
+  EXPECT_EQ(fast.simulation.status(), EvalStatus::exploded);
+  EXPECT_NE(fast.simulation.message().find("the joint of part 1 (degree of freedom 0)"),
+            std::string::npos)
+      << fast.simulation.message();
+  EXPECT_NE(fast.simulation.message().find("physics.max_joint_speed 5"), std::string::npos)
+      << fast.simulation.message();
 }
 
 // a non-finite state is caught as non_finite (not exploded) on the step it appears, and
