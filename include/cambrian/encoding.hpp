@@ -78,8 +78,23 @@ struct Creature {
   std::shared_ptr<const ControllerPlan> controller;  ///< null: nothing drives the effectors
 };
 
-/// The variation operators a breeding scheme may ask for.
-enum class Variation : std::uint8_t { mutation, crossover, graft };
+/// The variation operators a breeding scheme may ask for: the Sims / Chaumont scheme's
+/// mutation, crossover and graft, and Minemonics' reaper's operators.
+enum class Variation : std::uint8_t {
+  mutation,
+  crossover,
+  graft,
+  gene_specification,    ///< genes re-drawn, their connections kept
+  gene_split,            ///< genes halved, the halves rigidly joined
+  gene_purge,            ///< a gene re-drawn and cut off from the others
+  branch_specification,  ///< connections re-drawn, their ends kept
+  grow_stub,             ///< new connections
+  graft_feature,         ///< a gene of a second genome and the genes below it, a few levels deep
+};
+/// Number of Variation values.
+constexpr int kVariationKinds = 9;
+/// Lower-case variation name ("gene_split").
+const char* variationName(Variation variation);
 
 /// A genome representation. An instance carries its settings (limits, operator rates): the
 /// experiment's configured instance develops and varies genomes; the registered prototype
@@ -115,9 +130,15 @@ class Encoding {
   /// A mutated copy of `parent`; `parameter_rate` is the chance each parameter is perturbed
   /// (the encoding's structural rates are its own settings). Valid under the settings.
   virtual Genotype mutate(const Genotype& parent, double parameter_rate, Rng& rng) const = 0;
-  /// A child of two parents by `variation` (crossover, graft). Valid under the settings.
+  /// A child of two parents by `variation` (crossover, graft, graft_feature: `a` receives).
+  /// Valid under the settings.
   virtual Genotype combine(Variation variation, const Genotype& a, const Genotype& b,
                            Rng& rng) const = 0;
+  /// A varied copy of `parent` by a one-parent variation other than mutation (gene_specification,
+  /// gene_split, gene_purge, branch_specification, grow_stub), with the encoding's own rates.
+  /// Valid under the settings. Throws GenomeError for a variation the encoding lacks (the
+  /// default: every one).
+  virtual Genotype vary(Variation variation, const Genotype& parent, Rng& rng) const;
   /// The last step after any variation (the directed graph: collect unreachable nodes, unless
   /// the settings keep them).
   virtual Genotype tidy(const Genotype& genome) const { return genome; }

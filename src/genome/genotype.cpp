@@ -2,6 +2,7 @@
 #include "cambrian/encoding.hpp"
 #include "cambrian/error.hpp"
 
+#include <iterator>
 #include <typeinfo>
 
 namespace cambrian {
@@ -51,6 +52,24 @@ bool operator==(const Genotype& a, const Genotype& b) {
 void Genotype::wrongType() const {
   throw GenomeError("genome of encoding " + encoding().name() + " is not the type asked for (" +
                     typeid(data()).name() + ")");
+}
+
+const char* variationName(Variation variation) {
+  static constexpr const char* kNames[kVariationKinds] = {"mutation",
+                                                          "crossover",
+                                                          "graft",
+                                                          "gene_specification",
+                                                          "gene_split",
+                                                          "gene_purge",
+                                                          "branch_specification",
+                                                          "grow_stub",
+                                                          "graft_feature"};
+  const auto index = static_cast<std::size_t>(variation);
+  return index < std::size(kNames) ? kNames[index] : "unknown";
+}
+
+Genotype Encoding::vary(Variation variation, const Genotype&, Rng&) const {
+  throw GenomeError("the encoding " + name() + " has no variation " + variationName(variation));
 }
 
 void Encoding::requireOwn(const Genotype& genome) const {

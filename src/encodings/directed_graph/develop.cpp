@@ -57,17 +57,6 @@ Quat normalized(Quat q) {
   return {q.w / n, q.x / n, q.y / n, q.z / n};
 }
 
-// index of the largest |p_k|, ties to the lowest k
-int dominantAxis(Vec3 p) {
-  int k = 0;
-  for (int i = 1; i < 3; ++i) {
-    if (std::fabs(p[i]) > std::fabs(p[k])) {
-      k = i;
-    }
-  }
-  return k;
-}
-
 // area of the parent's face perpendicular to axis k
 double faceArea(Vec3 size, int k) {
   return size[(k + 1) % 3] * size[(k + 2) % 3];
@@ -425,6 +414,16 @@ void wireNeuron(NeuronPlan& neuron, const NeuronGene& gene, Resolve resolve) {
 }
 
 }  // namespace
+
+int dominantAxis(Vec3 p) {
+  int k = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (std::fabs(p[i]) > std::fabs(p[k])) {
+      k = i;
+    }
+  }
+  return k;
+}
 
 Creature develop(const Genome& genome, const GenomeLimits& limits) {
   checkGenome(genome, limits);

@@ -192,6 +192,29 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
               {{"root", GraftInto::root}, {"any_node", GraftInto::any_node}},
               "the second parent's node a graft leads into: root (its whole body) | any_node "
               "(drawn uniformly, as Sims grafts)");
+
+  // the reaper's operators (evolution.scheme = reaper; Minemonics' numbers)
+  ReaperOperatorSettings& r = reaper;
+  probability("evolution.gene_specification_chance", r.gene_specification_chance,
+              "reaper: chance each gene is re-drawn by a gene specification (Minemonics: 0.2)");
+  probability("evolution.gene_split_chance", r.gene_split_chance,
+              "reaper: chance each gene is split in two by a gene split (Minemonics: 0.2)");
+  probability("evolution.branch_specification_chance", r.branch_specification_chance,
+              "reaper: chance each gene has one connection re-drawn by a branch specification "
+              "(Minemonics: 0.2)");
+  probability("evolution.grow_stub_chance", r.grow_stub_chance,
+              "reaper: chance each gene grows new connections by a grow stub (Minemonics: 0.6)");
+  s.add("evolution.grow_stub_max", r.grow_stub_max,
+        "reaper: most connections a gene grows by a grow stub (Minemonics: 0..2)")
+      .require([&r] { return r.grow_stub_max >= 0 && r.grow_stub_max <= 16; }, "must be in 0..16");
+  s.add("evolution.graft_depth_min", r.graft_depth_min,
+        "reaper: fewest levels of genes a feature graft copies (Minemonics: 5)")
+      .require([&r] { return r.graft_depth_min >= 1 && r.graft_depth_min <= 64; },
+               "must be in 1..64");
+  s.add("evolution.graft_depth_max", r.graft_depth_max,
+        "reaper: most levels of genes a feature graft copies (Minemonics: 10)")
+      .require([&r] { return r.graft_depth_max >= r.graft_depth_min && r.graft_depth_max <= 64; },
+               "must be in evolution.graft_depth_min..64");
   s.add("evolution.keep_unconnected", m.keep_unconnected,
         "keep nodes unreachable from the root (Chaumont) instead of collecting them");
 }
@@ -257,7 +280,30 @@ Genotype DirectedGraphEncoding::combine(Variation variation, const Genotype& a, 
   const Genome& second = graphGenome(b);
   if (variation == Variation::graft)
     return makeGenotype(graft(first, second, limits, rng, graft_into));
+  if (variation == Variation::graft_feature)
+    return makeGenotype(graftFeature(first, second, limits, reaper, rng));
+  if (variation != Variation::crossover)
+    throw GenomeError(std::string("directed_graph: ") + variationName(variation) +
+                      " takes one parent");
   return makeGenotype(crossover(first, second, limits, rng));
+}
+
+Genotype DirectedGraphEncoding::vary(Variation variation, const Genotype& parent, Rng& rng) const {
+  const Genome& genome = graphGenome(parent);
+  switch (variation) {
+    case Variation::gene_specification:
+      return makeGenotype(specifyGenes(genome, limits, reaper, rng));
+    case Variation::gene_split:
+      return makeGenotype(splitGenes(genome, limits, reaper, rng));
+    case Variation::gene_purge:
+      return makeGenotype(purgeGene(genome, limits, rng));
+    case Variation::branch_specification:
+      return makeGenotype(specifyBranches(genome, limits, reaper, rng));
+    case Variation::grow_stub:
+      return makeGenotype(growStubs(genome, limits, reaper, rng));
+    default:
+      return Encoding::vary(variation, parent, rng);
+  }
 }
 
 Genotype DirectedGraphEncoding::tidy(const Genotype& genome) const {

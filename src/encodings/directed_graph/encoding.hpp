@@ -6,6 +6,7 @@
 
 #include "encodings/directed_graph/genome.hpp"
 #include "encodings/directed_graph/operators.hpp"
+#include "encodings/directed_graph/reaper_operators.hpp"
 
 namespace cambrian::graph {
 
@@ -19,7 +20,8 @@ struct GraphGenomeData : GenomeData {
 Genotype makeGenotype(Genome genome);
 
 /// Sims' directed graph: nodes are part classes, connections joint classes; mutation,
-/// crossover and grafting; development into boxes, the nested network and joint oscillators.
+/// crossover and grafting, and Minemonics' reaper's operators; development into boxes, the nested
+/// network and joint oscillators.
 class DirectedGraphEncoding : public Encoding {
  public:
   /// The registered name.
@@ -41,6 +43,7 @@ class DirectedGraphEncoding : public Encoding {
   Genotype mutate(const Genotype& parent, double parameter_rate, Rng& rng) const override;
   Genotype combine(Variation variation, const Genotype& a, const Genotype& b,
                    Rng& rng) const override;
+  Genotype vary(Variation variation, const Genotype& parent, Rng& rng) const override;
   Genotype tidy(const Genotype& genome) const override;
 
   std::vector<std::uint8_t> toBytes(const GenomeData& data) const override;
@@ -60,6 +63,8 @@ class DirectedGraphEncoding : public Encoding {
   MutationSettings mutation;
   /// Where grafting attaches the second parent (evolution.graft_into).
   GraftInto graft_into = GraftInto::root;
+  /// The reaper's operators' chances and sizes ([evolution] keys).
+  ReaperOperatorSettings reaper;
 };
 
 }  // namespace cambrian::graph

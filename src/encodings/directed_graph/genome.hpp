@@ -235,6 +235,10 @@ std::string genomeToText(const Genome& genome);
 /// field, and for a version-2 text without its final `end`, that it may be truncated.
 Genome parseGenomeText(const std::string& text, const std::string& source = "<text>");
 
+/// The axis of the parent's face a connection at `position` attaches to: the index of the
+/// largest |position_k|, ties to the lowest k.
+int dominantAxis(Vec3 position);
+
 /// Develops a genome (embryogenesis): walks the graph from node 0 with recursive limits,
 /// reflections and scaling; instantiates sensors, neurons and effectors and wires them as
 /// Sims describes. Deterministic. Sizes are clamped to limits; development stops at

@@ -117,9 +117,8 @@ Genome purgeGene(const Genome& parent, const GenomeLimits& limits, Rng& rng) {
     return g;
   const auto purged = static_cast<std::uint16_t>(1 + rng.below(g.nodes.size() - 1));
   g.nodes[purged] = randomPartGene(limits, rng);
-  std::erase_if(g.connections, [purged](const ConnectionGene& c) {
-    return c.to == purged && c.from != purged;
-  });
+  std::erase_if(g.connections,
+                [purged](const ConnectionGene& c) { return c.to == purged && c.from != purged; });
   fitToLimits(g, limits);
   return g;
 }
@@ -155,8 +154,7 @@ Genome growStubs(const Genome& parent, const GenomeLimits& limits,
       if (static_cast<int>(g.connections.size()) >= limits.max_connections)
         break;
       const auto to = static_cast<std::uint16_t>(rng.below(g.nodes.size()));
-      g.connections.push_back(
-          randomConnectionGene(static_cast<std::uint16_t>(i), to, limits, rng));
+      g.connections.push_back(randomConnectionGene(static_cast<std::uint16_t>(i), to, limits, rng));
     }
   }
   fitToLimits(g, limits);

@@ -35,12 +35,24 @@ TEST(ReaperOperators, AlwaysValidAndDevelop) {
       Rng rng(81, RngPurpose::variation, step, lineage);
       Genome donor = randomGenome(limits, 82, step, lineage);
       switch (step % 6) {
-        case 0: g = specifyGenes(g, limits, settings, rng); break;
-        case 1: g = splitGenes(g, limits, settings, rng); break;
-        case 2: g = purgeGene(g, limits, rng); break;
-        case 3: g = specifyBranches(g, limits, settings, rng); break;
-        case 4: g = growStubs(g, limits, settings, rng); break;
-        default: g = graftFeature(g, donor, limits, settings, rng); break;
+        case 0:
+          g = specifyGenes(g, limits, settings, rng);
+          break;
+        case 1:
+          g = splitGenes(g, limits, settings, rng);
+          break;
+        case 2:
+          g = purgeGene(g, limits, rng);
+          break;
+        case 3:
+          g = specifyBranches(g, limits, settings, rng);
+          break;
+        case 4:
+          g = growStubs(g, limits, settings, rng);
+          break;
+        default:
+          g = graftFeature(g, donor, limits, settings, rng);
+          break;
       }
       ASSERT_NO_THROW(validateGenome(g, limits)) << "lineage " << lineage << " step " << step;
       ASSERT_NO_THROW(develop(g, limits)) << "lineage " << lineage << " step " << step;
@@ -169,8 +181,8 @@ TEST(ReaperOperators, GenePurgeCutsOneGeneOff) {
   for (int i = 0; i < 3; ++i)
     g.nodes.emplace_back();
   // 0 -> 1, 0 -> 2, 1 -> 2, 2 -> 2, 2 -> 3
-  for (auto [from, to] : std::array<std::pair<int, int>, 5>{{{0, 1}, {0, 2}, {1, 2}, {2, 2},
-                                                             {2, 3}}}) {
+  for (auto [from, to] :
+       std::array<std::pair<int, int>, 5>{{{0, 1}, {0, 2}, {1, 2}, {2, 2}, {2, 3}}}) {
     ConnectionGene c;
     c.from = static_cast<std::uint16_t>(from);
     c.to = static_cast<std::uint16_t>(to);
@@ -192,10 +204,9 @@ TEST(ReaperOperators, GenePurgeCutsOneGeneOff) {
     for (const ConnectionGene& c : p.connections)
       EXPECT_FALSE(c.to == purged && c.from != purged) << "draw " << draw;
     // every other connection is kept
-    const auto kept = std::count_if(g.connections.begin(), g.connections.end(),
-                                    [&](const ConnectionGene& c) {
-                                      return !(c.to == purged && c.from != purged);
-                                    });
+    const auto kept = std::count_if(
+        g.connections.begin(), g.connections.end(),
+        [&](const ConnectionGene& c) { return !(c.to == purged && c.from != purged); });
     EXPECT_EQ(static_cast<long>(p.connections.size()), kept);
   }
   EXPECT_EQ(purged_seen, (std::set<int>{1, 2, 3}));
@@ -276,8 +287,8 @@ TEST(ReaperOperators, AFeatureIsTheGenesDownToItsDepth) {
     donor.nodes.emplace_back();
     donor.nodes.back().density = 1000 + i;  // tells the genes apart
   }
-  for (auto [from, to] : std::array<std::pair<int, int>, 6>{{{0, 1}, {1, 2}, {2, 3}, {3, 4},
-                                                             {1, 4}, {2, 2}}}) {
+  for (auto [from, to] :
+       std::array<std::pair<int, int>, 6>{{{0, 1}, {1, 2}, {2, 3}, {3, 4}, {1, 4}, {2, 2}}}) {
     ConnectionGene c;
     c.from = static_cast<std::uint16_t>(from);
     c.to = static_cast<std::uint16_t>(to);
