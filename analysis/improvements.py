@@ -2,8 +2,9 @@
 """Points of improvement in a cambrian history: which operators make offspring better than
 their parent(s), and which make a new best-so-far fitness.
 
-For every offspring of `mutation`, `crossover` and `graft` the outcome is classed against its
-better parent: `improved` (fitness above it), `same` (equal), `worse` (below) or `failed` (status
+For every offspring of `mutation`, `crossover` and `graft` (and of the reaper's
+`gene_specification`, `gene_split`, `gene_purge`, `branch_specification`, `grow_stub` and
+`graft_feature`) the outcome is classed against its better parent: `improved` (fitness above it), `same` (equal), `worse` (below) or `failed` (status
 not ok). Crossover and graft children of two identical parents (same id or identical genome
 bytes) are listed as `crossover (same parents)` / `graft (same parents)`: the operator then
 could only act as a mutation (Krčah 2008 credits those to mutation).
@@ -34,7 +35,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import cambrian_history as ch  # noqa: E402
 
 PROGRAM = "improvements"
-BREEDING = ("mutation", "crossover", "graft")
+# the operators that make offspring: the generational scheme's, then Minemonics' reaper's
+BREEDING = ("mutation", "crossover", "graft", "gene_specification", "gene_split", "gene_purge",
+            "branch_specification", "grow_stub", "graft_feature")
 OUTCOMES = ("improved", "same", "worse", "failed")
 
 

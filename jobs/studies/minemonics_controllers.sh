@@ -6,7 +6,9 @@
 # the fitness of every run in one figure (analysis/plot_fitness.py).
 # usage: bash jobs/studies/minemonics_controllers.sh [--skip-runs] [SEED ...]   (default 1 2 3)
 #   environment: CAMBRIAN (binary, default build/release/src/app/cambrian), OUT (default
-#   runs/minemonics), WORKERS (default: the number of cores)
+#   runs/minemonics), WORKERS (default: the number of cores), EVOLVE_ARGS (more evolve options;
+#   docs/minemonics.md's table was made with "--evolution.scheme generational
+#   --physics.max_joint_speed 0", before the files took the reaper and the joint-speed discard)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 skip_runs=false
@@ -19,6 +21,7 @@ seeds=("$@")
 cambrian=${CAMBRIAN:-build/release/src/app/cambrian}
 out=${OUT:-runs/minemonics}
 workers=${WORKERS:-$(nproc)}
+evolve_args=${EVOLVE_ARGS:-}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 MPLBACKEND=Agg
 
 histories=()
@@ -26,7 +29,7 @@ for kind in sine chaotic; do
   for seed in "${seeds[@]}"; do
     dir=$out/$kind-$seed
     if ! $skip_runs; then
-      mpirun --oversubscribe -np $((workers + 1)) "$cambrian" evolve \
+      mpirun --oversubscribe -np $((workers + 1)) "$cambrian" evolve $evolve_args \
         --config "jobs/experiments/minemonics/walk-$kind.ini" --seed "$seed" --out "$dir" --quiet
     fi
     # the best of the last generation: bit for bit, then at half the step

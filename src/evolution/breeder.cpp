@@ -3,6 +3,7 @@
 #include "cambrian/error.hpp"
 #include "cambrian/rng.hpp"
 
+#include "evolution/reaper.hpp"
 #include "evolution/selection.hpp"
 
 #include <cmath>
@@ -25,6 +26,24 @@ BreedingPlan planBreeding(const EvolutionSettings& s) {
 
 Breeder::Breeder(const EvolutionSettings& settings, const Encoding& encoding)
     : settings_(settings), encoding_(encoding), plan_(planBreeding(settings)) {
+  // every operator the reaper's plan uses must exist for the encoding
+  if (settings.scheme == BreedingScheme::reaper) {
+    const ReaperPlan reaper = planReaper(settings);
+    static constexpr Variation kVaried[kReaperShares] = {
+        Variation::mutation,     Variation::gene_specification,   Variation::gene_split,
+        Variation::gene_purge,   Variation::branch_specification, Variation::grow_stub,
+        Variation::graft_feature};
+    for (int k = 1; k < kReaperShares; ++k) {
+      if (reaper.survivors[static_cast<std::size_t>(k)] > 0 && !encoding_.supports(kVaried[k]))
+        throw ConfigError(std::string("evolution.reaper_") +
+                          reaperShareName(static_cast<ReaperShare>(k)) + "_share: the encoding " +
+                          encoding_.name() + " has no such operator; set it to 0");
+    }
+    if (reaper.crossovers > 0 && !encoding_.supports(Variation::crossover))
+      throw ConfigError("evolution.sow_crossover_fraction: the encoding " + encoding_.name() +
+                        " has no crossover; set it to 0");
+    return;
+  }
   // every operator the plan uses must exist for the encoding
   const std::pair<int, Variation> needs[] = {{plan_.mutations, Variation::mutation},
                                              {plan_.crossovers, Variation::crossover},
@@ -36,6 +55,18 @@ Breeder::Breeder(const EvolutionSettings& settings, const Encoding& encoding)
       throw ConfigError(std::string(kKeys[static_cast<int>(variation)]) + ": the encoding " +
                         encoding_.name() + " has no such operator; set it to 0");
   }
+}
+
+Individual Breeder::eliteCopy(const Individual& parent, std::uint64_t generation) {
+  Individual copy;
+  copy.id = next_id_++;
+  copy.generation = generation;
+  copy.parents = {parent.id};
+  copy.origin = Origin::elite;
+  copy.genome = parent.genome;
+  copy.outcome = parent.outcome;
+  copy.evaluated = true;
+  return copy;
 }
 
 Population Breeder::initialPopulation(const std::vector<Genotype>& seeds) {
@@ -85,6 +116,8 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     throw std::invalid_argument("nextGeneration: generation " +
                                 std::to_string(evaluated.generation) + " is not fully evaluated");
   }
+  if (settings_.scheme == BreedingScheme::reaper)
+    return reap(evaluated);
   std::uint64_t g = evaluated.generation + 1;
   std::vector<std::size_t> ranking = evaluated.ranking();
   std::vector<double> ranked_fitness;
@@ -97,18 +130,9 @@ Population Breeder::nextGeneration(const Population& evaluated) {
   next.individuals.reserve(static_cast<std::size_t>(plan_.total()));
 
   // elites: copies of the best with their outcomes (their genome did not change)
-  for (int e = 0; e < plan_.elites && e < static_cast<int>(ranking.size()); ++e) {
-    const Individual& parent = evaluated.individuals[ranking[static_cast<std::size_t>(e)]];
-    Individual copy;
-    copy.id = next_id_++;
-    copy.generation = g;
-    copy.parents = {parent.id};
-    copy.origin = Origin::elite;
-    copy.genome = parent.genome;
-    copy.outcome = parent.outcome;
-    copy.evaluated = true;
-    next.individuals.push_back(std::move(copy));
-  }
+  for (int e = 0; e < plan_.elites && e < static_cast<int>(ranking.size()); ++e)
+    next.individuals.push_back(
+        eliteCopy(evaluated.individuals[ranking[static_cast<std::size_t>(e)]], g));
 
   // every parent pick of the generation in one stream: (seed, selection, g, 0)
   auto picks_needed =

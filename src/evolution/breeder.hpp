@@ -1,5 +1,6 @@
-// cambrian: the generational Sims / Chaumont scheme — elitism plus mutation, crossover, grafting —
-// over genomes of any encoding (through the Encoding interface).
+// cambrian: breeding generations over genomes of any encoding (through the Encoding interface):
+// the generational Sims / Chaumont scheme — elitism plus mutation, crossover, grafting — or
+// Minemonics' reaper (reaper.hpp), as evolution.scheme says.
 #pragma once
 
 #include "cambrian/encoding.hpp"
@@ -43,8 +44,9 @@ class Breeder {
   /// Generation 0: random genomes, or the seeds followed by mutated copies of them (round robin).
   Population initialPopulation(const std::vector<Genotype>& seeds = {});
 
-  /// The next generation from an evaluated one: the best `elites` copied with their outcomes
-  /// (not re-evaluated), then mutation, crossover and graft offspring of selected parents.
+  /// The next generation from an evaluated one. Generational: the best `elites` copied with
+  /// their outcomes (not re-evaluated), then mutation, crossover and graft offspring of selected
+  /// parents. Reaper: the kept survivors with their outcomes, the varied survivors, the sown.
   /// Throws std::invalid_argument when `evaluated` is not fully evaluated.
   Population nextGeneration(const Population& evaluated);
 
@@ -60,10 +62,14 @@ class Breeder {
   std::uint64_t nextId() const { return next_id_; }
   /// Sets the id counter (resuming a run).
   void setNextId(std::uint64_t id) { next_id_ = id; }
-  /// The plan every generation after the first follows.
+  /// The plan every generation after the first follows (the generational scheme).
   const BreedingPlan& plan() const { return plan_; }
 
  private:
+  // the reaper's next generation (reaper.cpp)
+  Population reap(const Population& evaluated);
+  // a copy of `parent` in `generation`, with its outcome (its genome did not change)
+  Individual eliteCopy(const Individual& parent, std::uint64_t generation);
   bool acceptable(const Genotype& genome, int attempt) const {
     return !viable_ || attempt + 1 >= max_attempts_ || viable_(genome);
   }

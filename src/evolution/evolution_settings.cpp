@@ -8,6 +8,7 @@
 #include "evolution/epochs.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 namespace cambrian {
@@ -26,6 +27,14 @@ const char* selectionMethodName(SelectionMethod method) {
       return "rank";
   }
   return "unknown";
+}
+
+const char* reaperShareName(ReaperShare share) {
+  static constexpr const char* kNames[kReaperShares] = {
+      "elite",     "gene_specification", "gene_split", "gene_purge", "branch_specification",
+      "grow_stub", "graft_feature"};
+  const auto index = static_cast<std::size_t>(share);
+  return index < std::size(kNames) ? kNames[index] : "unknown";
 }
 
 void EvolutionSettings::declareSettings(SettingsSchema& s) {
@@ -61,6 +70,43 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
               "chance an offspring of crossover or grafting is then mutated");
   probability("evolution.post_crossover_mutation_rate", e.post_crossover_mutation_rate,
               "per-parameter rate of that mutation");
+
+  // the breeding scheme, and the reaper's shares (Minemonics)
+  s.addChoice("evolution.scheme", e.scheme,
+              {{"generational", BreedingScheme::generational}, {"reaper", BreedingScheme::reaper}},
+              "how a generation is bred: generational (elites, mutation, crossover, grafting: "
+              "Sims, Chaumont et al.) | reaper (Minemonics: cull the worst, vary the survivors, "
+              "sow by crossover and at random)");
+  ReaperSettings& r = e.reaper;
+  s.add("evolution.reap_fraction", r.reap_fraction,
+        "reaper: share of the worst culled and sown again (Minemonics: 0.3)")
+      .require([&r] { return r.reap_fraction > 0 && r.reap_fraction < 1; }, "must be in (0, 1)");
+  for (int k = 0; k < kReaperShares; ++k) {
+    const std::string name = reaperShareName(static_cast<ReaperShare>(k));
+    double& weight = r.shares[static_cast<std::size_t>(k)];
+    s.add("evolution.reaper_" + name + "_share", weight,
+          k == 0 ? "reaper: weight of the survivors kept unchanged (elitism; every weight 1: "
+                   "Minemonics' 14.28 % each)"
+                 : "reaper: weight of the survivors varied by " + name)
+        .require([&weight] { return weight >= 0 && std::isfinite(weight); },
+                 "must be >= 0 and finite");
+  }
+  probability("evolution.sow_crossover_fraction", r.sow_crossover_fraction,
+              "reaper: share of the sown made by crossover, the rest random (Minemonics: 0.5)");
+  s.add("evolution.reaper_tournament_size", r.tournament_size,
+        "reaper: contestants of a partner's tournament (Minemonics: 10)")
+      .require([&r] { return r.tournament_size >= 1 && r.tournament_size <= 1000; },
+               "must be in 1..1000");
+  probability("evolution.reaper_tournament_chance", r.tournament_chance,
+              "reaper: chance a partner is the best of a tournament, else drawn uniformly "
+              "(Minemonics: 0.5)");
+  s.addCheck([&r] {
+    double sum = 0;
+    for (double weight : r.shares)
+      sum += weight;
+    if (!(sum > 0))
+      throw ConfigError("evolution.reaper_*_share: every weight is 0; give one a weight");
+  });
 
   // selection
   s.addChoice("evolution.selection", e.selection.method,

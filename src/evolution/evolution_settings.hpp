@@ -1,6 +1,7 @@
 // cambrian: the settings of the genetic algorithm (the [evolution] section of an experiment).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -29,9 +30,43 @@ struct SelectionSettings {
   double rank_pressure = 1.7;        ///< expected offspring of the best under linear ranking
 };
 
-/// Everything the generational Sims / Chaumont scheme needs. The encoding's own operator
-/// settings (structural mutation rates) are the encoding's.
+/// How each generation is bred from the last (evolution.scheme).
+enum class BreedingScheme : std::uint8_t {
+  generational,  ///< Sims / Chaumont: elites, then mutation, crossover and graft offspring
+  reaper,        ///< Minemonics' reaper: cull, vary the survivors, sow by crossover and at random
+};
+
+/// The kinds of survivor the reaper makes, in slot order: kept (elites), then one per operator.
+enum class ReaperShare : std::uint8_t {
+  elite,
+  gene_specification,
+  gene_split,
+  gene_purge,
+  branch_specification,
+  grow_stub,
+  graft_feature,
+};
+/// Number of ReaperShare values.
+constexpr int kReaperShares = 7;
+/// Lower-case name ("gene_split"), as in the keys evolution.reaper_NAME_share.
+const char* reaperShareName(ReaperShare share);
+
+/// Minemonics' reaper (evolution.scheme = reaper), with the thesis' numbers.
+struct ReaperSettings {
+  double reap_fraction = 0.3;  ///< the worst share culled, and sown again
+  /// relative weights of the survivors' kinds (ReaperShare order): 14.28 % each
+  std::array<double, kReaperShares> shares{1, 1, 1, 1, 1, 1, 1};
+  double sow_crossover_fraction = 0.5;  ///< of the sown, the share made by crossover (the rest
+                                        ///< random)
+  int tournament_size = 10;             ///< contestants when a partner is chosen by tournament
+  double tournament_chance = 0.5;       ///< chance a partner comes from a tournament, not at random
+};
+
+/// Everything the generational Sims / Chaumont scheme and the reaper need. The encoding's own
+/// operator settings (structural mutation rates) are the encoding's.
 struct EvolutionSettings {
+  BreedingScheme scheme = BreedingScheme::generational;
+  ReaperSettings reaper;            ///< evolution.scheme = reaper
   int population = 100;             ///< individuals per generation (P)
   int generations = 30;             ///< generations to run, the initial one included (G)
   double elite_fraction = 0.2;      ///< best share copied unchanged and not re-evaluated

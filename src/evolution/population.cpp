@@ -21,6 +21,18 @@ const char* originName(Origin origin) {
       return "crossover";
     case Origin::graft:
       return "graft";
+    case Origin::gene_specification:
+      return "gene_specification";
+    case Origin::gene_split:
+      return "gene_split";
+    case Origin::gene_purge:
+      return "gene_purge";
+    case Origin::branch_specification:
+      return "branch_specification";
+    case Origin::grow_stub:
+      return "grow_stub";
+    case Origin::graft_feature:
+      return "graft_feature";
   }
   return "unknown";
 }

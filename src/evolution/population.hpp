@@ -12,7 +12,23 @@
 namespace cambrian {
 
 /// What made an individual.
-enum class Origin : std::uint8_t { random, seed, elite, mutation, crossover, graft };
+enum class Origin : std::uint8_t {
+  random,
+  seed,
+  elite,
+  mutation,
+  crossover,
+  graft,
+  // Minemonics' reaper (evolution.scheme = reaper)
+  gene_specification,
+  gene_split,
+  gene_purge,
+  branch_specification,
+  grow_stub,
+  graft_feature,
+};
+/// Number of Origin values.
+constexpr int kOriginKinds = 12;
 
 /// Lower-case origin name ("crossover").
 const char* originName(Origin origin);

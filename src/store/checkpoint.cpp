@@ -165,7 +165,7 @@ Individual individualFrom(const C& c, std::size_t k) {
     i.parents.push_back(c.parent_a[k]);
   if (c.parent_b[k] != kNoId)
     i.parents.push_back(c.parent_b[k]);
-  if (c.origin[k] > static_cast<std::uint8_t>(Origin::graft))
+  if (c.origin[k] >= kOriginKinds)
     throw std::runtime_error("/population row " + std::to_string(k) + ": origin out of range");
   i.origin = static_cast<Origin>(c.origin[k]);
   i.evaluated = c.evaluated[k] != 0;

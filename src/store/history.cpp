@@ -122,7 +122,7 @@ const std::vector<Column>& generationColumns() {
 // names of the enum values 0..n-1
 std::vector<std::string> originNames() {
   std::vector<std::string> names;
-  for (int i = 0; i <= static_cast<int>(Origin::graft); ++i)
+  for (int i = 0; i < kOriginKinds; ++i)
     names.push_back(originName(static_cast<Origin>(i)));
   return names;
 }
@@ -849,8 +849,7 @@ std::vector<Individual> HistoryReader::individuals() const {
     for (hsize_t i = 0; i < rows; ++i) {
       if (offset[i] > byte_count || size[i] > byte_count - offset[i])
         break;  // bytes of a row still being appended
-      if (origin[i] > static_cast<std::uint8_t>(Origin::graft) ||
-          status[i] > static_cast<std::uint8_t>(EvalStatus::failed))
+      if (origin[i] >= kOriginKinds || status[i] > static_cast<std::uint8_t>(EvalStatus::failed))
         throw InputError(path_ + ": /individuals row " + std::to_string(i) +
                          ": operator or status out of range (corrupt history)");
       Individual row;

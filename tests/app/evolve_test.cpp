@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -412,6 +413,46 @@ TEST(EvolveCommand, EpochsRateEachGenerationByTheirJuriesAcrossKillAndResume) {
   EXPECT_NE(both.output.find("evolution.epochs and evolution.ranking are both set"),
             std::string::npos)
       << both.output;
+}
+
+// Minemonics' reaper: every generation after the first has the reaper's kinds in their counts
+// (population 14: 5 culled, sown 3 by crossover and 2 at random; the 9 survivors in sevenths,
+// the 2 left over to the first two kinds), named in the history;
+// a run killed in the third generation's evaluation resumes and ends as the straight run does
+TEST(EvolveCommand, TheReaperBreedsItsSharesAndResumesExactly) {
+  const std::string command =
+      "evolve --task.name juries --task.evaluation_time 1 --evolution.population 14 "
+      "--evolution.generations 3 --evolution.scheme reaper --run.checkpoint_every 1 --seed 7 "
+      "--out ";
+  const std::string dir = freshDir("reaper");
+  auto straight = runCambrian(command + dir);
+  ASSERT_EQ(straight.exit_code, 0) << straight.output;
+  HistoryReader reader(dir + "/history.h5");
+  std::map<std::uint64_t, std::map<std::string, int>> kinds;
+  for (const Individual& row : reader.individuals())
+    ++kinds[row.generation][originName(row.origin)];
+  for (std::uint64_t g : {1u, 2u}) {
+    std::map<std::string, int> expected{{"elite", 2},
+                                        {"gene_specification", 2},
+                                        {"gene_split", 1},
+                                        {"gene_purge", 1},
+                                        {"branch_specification", 1},
+                                        {"grow_stub", 1},
+                                        {"graft_feature", 1},
+                                        {"crossover", 3},
+                                        {"random", 2}};
+    EXPECT_EQ(kinds[g], expected) << "generation " << g;
+  }
+
+  const std::string killed_dir = freshDir("reaper_killed");
+  auto killed = runCambrian(command + killed_dir + " --run.test_kill_at evaluation:2");
+  EXPECT_NE(killed.exit_code, 0) << killed.output;
+  auto resumed = runCambrian(command + killed_dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("at generation 2"), std::string::npos) << resumed.output;
+  const std::string digest = test::lineStartingWith(straight.output, "digest ");
+  ASSERT_FALSE(digest.empty());
+  EXPECT_EQ(test::lineStartingWith(resumed.output, "digest "), digest);
 }
 
 TEST(EvolveCommand, HelpShowsDefaultsAsWritten) {
