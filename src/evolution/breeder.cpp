@@ -26,22 +26,8 @@ BreedingPlan planBreeding(const EvolutionSettings& s) {
 
 Breeder::Breeder(const EvolutionSettings& settings, const Encoding& encoding)
     : settings_(settings), encoding_(encoding), plan_(planBreeding(settings)) {
-  // every operator the reaper's plan uses must exist for the encoding
   if (settings.scheme == BreedingScheme::reaper) {
-    const ReaperPlan reaper = planReaper(settings);
-    static constexpr Variation kVaried[kReaperShares] = {
-        Variation::mutation,     Variation::gene_specification,   Variation::gene_split,
-        Variation::gene_purge,   Variation::branch_specification, Variation::grow_stub,
-        Variation::graft_feature};
-    for (int k = 1; k < kReaperShares; ++k) {
-      if (reaper.survivors[static_cast<std::size_t>(k)] > 0 && !encoding_.supports(kVaried[k]))
-        throw ConfigError(std::string("evolution.reaper_") +
-                          reaperShareName(static_cast<ReaperShare>(k)) + "_share: the encoding " +
-                          encoding_.name() + " has no such operator; set it to 0");
-    }
-    if (reaper.crossovers > 0 && !encoding_.supports(Variation::crossover))
-      throw ConfigError("evolution.sow_crossover_fraction: the encoding " + encoding_.name() +
-                        " has no crossover; set it to 0");
+    requireReaperOperators(settings, encoding);
     return;
   }
   // every operator the plan uses must exist for the encoding

@@ -1,11 +1,14 @@
 #include "evolution/reaper.hpp"
 
+#include "cambrian/error.hpp"
+
 #include "evolution/breeder.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 namespace cambrian {
 
@@ -55,6 +58,19 @@ ReaperPlan planReaper(const EvolutionSettings& settings) {
   plan.crossovers = static_cast<int>(std::lround(plan.culled * r.sow_crossover_fraction));
   plan.randoms = plan.culled - plan.crossovers;
   return plan;
+}
+
+void requireReaperOperators(const EvolutionSettings& settings, const Encoding& encoding) {
+  const ReaperPlan plan = planReaper(settings);
+  for (int k = 1; k < kReaperShares; ++k) {
+    if (plan.survivors[static_cast<std::size_t>(k)] > 0 && !encoding.supports(kShareVariation[k]))
+      throw ConfigError(std::string("evolution.reaper_") +
+                        reaperShareName(static_cast<ReaperShare>(k)) + "_share: the encoding " +
+                        encoding.name() + " has no such operator; set it to 0");
+  }
+  if (plan.crossovers > 0 && !encoding.supports(Variation::crossover))
+    throw ConfigError("evolution.sow_crossover_fraction: the encoding " + encoding.name() +
+                      " has no crossover; set it to 0");
 }
 
 std::size_t reaperPartner(std::size_t count, const ReaperSettings& settings, Rng& rng) {

@@ -3,6 +3,7 @@
 // crossover and at random. Breeder::nextGeneration follows it when the scheme is chosen.
 #pragma once
 
+#include "cambrian/encoding.hpp"
 #include "cambrian/rng.hpp"
 
 #include "evolution/evolution_settings.hpp"
@@ -30,6 +31,10 @@ std::vector<int> apportion(int total, std::span<const double> weights);
 /// Minemonics' code rounds up), the survivors apportioned by the shares, the culled places sown
 /// round(culled * sow_crossover_fraction) by crossover and the rest at random.
 ReaperPlan planReaper(const EvolutionSettings& settings);
+
+/// Throws ConfigError naming the key (evolution.reaper_NAME_share, sow_crossover_fraction) when
+/// the reaper's plan for `settings` needs an operator `encoding` lacks.
+void requireReaperOperators(const EvolutionSettings& settings, const Encoding& encoding);
 
 /// A partner among `count` ranked survivors (0 the best): with tournament_chance the best of
 /// tournament_size contestants, each at index |N(0, count / 3)| (rounded down, at most
