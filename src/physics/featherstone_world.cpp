@@ -1,6 +1,8 @@
 // cambrian: the Bullet Featherstone multibody world.
 #include "physics/featherstone_world.hpp"
 
+#include "physics/bullet_scene.hpp"
+
 #include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
@@ -18,25 +20,6 @@
 namespace cambrian {
 
 namespace {
-
-btVector3 toBt(Vec3 v) {
-  return btVector3(v.x, v.y, v.z);
-}
-Vec3 fromBt(const btVector3& v) {
-  return {v.x(), v.y(), v.z()};
-}
-btQuaternion toBt(Quat q) {
-  return btQuaternion(q.x, q.y, q.z, q.w);
-}
-Quat fromBt(const btQuaternion& q) {
-  return {q.w(), q.x(), q.y(), q.z()};
-}
-
-// the user index of the ground and of free object k (parts carry their own index, >= 0)
-constexpr int kGroundIndex = -1;
-int objectIndex(int k) {
-  return -2 - k;
-}
 
 // a part's collider: collides with the ground and, while `self_contacts` is set, with the
 // creature's other parts except its parent and children (the joint neighbours), also across
@@ -373,65 +356,7 @@ class DampedWorld : public btMultiBodyDynamicsWorld {
   JointResponses* responses_ = nullptr;
 };
 
-// the collision shape of a part or object (capsules and cylinders along their x axis)
-std::unique_ptr<btCollisionShape> shapeOf(PartShape shape, Vec3 size) {
-  const double radius = 0.5 * size.y;
-  switch (shape) {
-    case PartShape::box:
-      break;
-    case PartShape::sphere:
-      return std::make_unique<btSphereShape>(0.5 * size.x);
-    case PartShape::capsule:
-      return std::make_unique<btCapsuleShapeX>(radius, std::max(0.0, size.x - 2 * radius));
-    case PartShape::cylinder:
-      return std::make_unique<btCylinderShapeX>(btVector3(0.5 * size.x, radius, radius));
-  }
-  return std::make_unique<btBoxShape>(toBt(size * 0.5));
-}
-
-// inertia of a part about its centre
-btVector3 inertiaOf(PartShape shape, Vec3 size, double mass) {
-  btVector3 inertia;
-  shapeOf(shape, size)->calculateLocalInertia(mass, inertia);
-  return inertia;
-}
-
-// how far a part reaches below its centre along world z, from its world basis
-double reachDown(const PartPlan& part, const btMatrix3x3& basis) {
-  Vec3 half = part.size * 0.5;
-  const double along = std::abs(basis[2][0]);
-  const double radius = 0.5 * part.size.y;
-  switch (part.shape) {
-    case PartShape::box:
-      break;
-    case PartShape::sphere:
-      return half.x;
-    case PartShape::capsule:
-      return along * std::max(0.0, half.x - radius) + radius;
-    case PartShape::cylinder:
-      return along * half.x + radius * std::sqrt(std::max(0.0, 1 - along * along));
-  }
-  return std::abs(basis[2][0]) * half.x + std::abs(basis[2][1]) * half.y +
-         std::abs(basis[2][2]) * half.z;
-}
-
 }  // namespace
-
-void FeatherstoneWorld::anchorFriction(btCollisionObject& object) const {
-  if (physics_.friction_anchors)
-    object.setCollisionFlags(object.getCollisionFlags() |
-                             btCollisionObject::CF_HAS_FRICTION_ANCHOR);
-}
-
-// collision memory pools sized for one creature (at most a few dozen parts): Bullet's default
-// pools (4,096 manifolds and algorithms) cost more to set up than a birth check itself; a pool
-// that runs out falls back to the heap, which changes no result
-btDefaultCollisionConstructionInfo creaturePools() {
-  btDefaultCollisionConstructionInfo info;
-  info.m_defaultMaxPersistentManifoldPoolSize = 256;
-  info.m_defaultMaxCollisionAlgorithmPoolSize = 256;
-  return info;
-}
 
 // the Bullet objects of one world, destroyed in reverse order of creation
 struct FeatherstoneObjects {
@@ -440,10 +365,7 @@ struct FeatherstoneObjects {
   btDbvtBroadphase broadphase;
   btMultiBodyConstraintSolver solver;
   DampedWorld world{&dispatcher, &broadphase, &solver, &configuration};
-  btStaticPlaneShape ground_shape{btVector3(0, 0, 1), 0};
-  btCollisionObject ground;
-  std::unique_ptr<btHeightfieldTerrainShape> terrain_shape;  // a heightfield ground (hills)
-  btCollisionObject terrain;
+  BulletGround ground;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<PartCollider>> colliders;  // one per part, BodyPlan order
   std::unique_ptr<JointResponses> responses;             // shared by damping, limits and motors
@@ -451,13 +373,9 @@ struct FeatherstoneObjects {
   std::vector<std::unique_ptr<BudgetMotor>> motors;  // one per effector (or null)
   std::unique_ptr<ImplicitJointDamping> damping;     // with physics.implicit_damping
   std::unique_ptr<btMultiBody> body;
-  std::vector<std::unique_ptr<btCollisionShape>> object_shapes;
-  std::vector<std::unique_ptr<btDefaultMotionState>> object_states;
-  std::vector<std::unique_ptr<btRigidBody>> objects;  // Environment::objects, then BodyPlan::held
+  FreeBodies objects;  // Environment::objects, then BodyPlan::held
   std::vector<std::unique_ptr<btMultiBodyFixedConstraint>> holds;  // per held object, null: let go
   bool self_contacts = true;  // parts touch each other (always at the birth check)
-  bool has_ground = false;    // the ground plane is in the world
-  bool has_terrain = false;   // the heightfield is in the world
   mutable btAlignedObjectArray<btVector3> omega, velocity;  // linkVelocities()
   // correctMomentum's scratch: each body's mass, centre, velocity, spin and world inertia
   struct BodyState {
@@ -473,7 +391,7 @@ struct FeatherstoneObjects {
     for (auto& hold : holds)
       if (hold)
         world.removeMultiBodyConstraint(hold.get());
-    for (auto& object : objects)
+    for (auto& object : objects.bodies)
       world.removeRigidBody(object.get());
     world.setDamping(nullptr);
     world.setResponses(nullptr);
@@ -486,10 +404,6 @@ struct FeatherstoneObjects {
       world.removeCollisionObject(collider.get());
     if (body)
       world.removeMultiBody(body.get());
-    if (has_terrain)
-      world.removeCollisionObject(&terrain);
-    if (has_ground)
-      world.removeCollisionObject(&ground);
   }
 };
 
@@ -522,19 +436,8 @@ void FeatherstoneWorld::refuse(EvalStatus status, std::string message) {
 }
 
 void FeatherstoneWorld::stopSelfContacts() {
-  FeatherstoneObjects& b = *bullet_;
-  b.self_contacts = false;
-
-  // drop the part-part pairs (and their contact manifolds) the birth check found
-  btOverlappingPairCache* pairs = b.world.getBroadphase()->getOverlappingPairCache();
-  btBroadphasePairArray& array = pairs->getOverlappingPairArray();
-  for (int i = array.size() - 1; i >= 0; --i) {
-    btBroadphasePair& pair = array[i];
-    const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
-    const auto* c = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-    if (a->getUserIndex() >= 0 && c->getUserIndex() >= 0)
-      pairs->removeOverlappingPair(pair.m_pProxy0, pair.m_pProxy1, b.world.getDispatcher());
-  }
+  bullet_->self_contacts = false;
+  dropPartPairs(bullet_->world);  // the pairs (and contact manifolds) the birth check found
 }
 
 void FeatherstoneWorld::build(double birth_height) {
@@ -562,42 +465,8 @@ void FeatherstoneWorld::build(double birth_height) {
     b.configuration.setPlaneConvexMultipointIterations();
   gravity_ = environment_.gravity.value_or(physics_.gravity);
   b.world.setGravity(btVector3(0, 0, -gravity_));
-  btContactSolverInfo& solver = b.world.getSolverInfo();
-  solver.m_numIterations = physics_.solver_iterations;
-  solver.m_leastSquaresResidualThreshold = physics_.solver_tolerance * physics_.solver_tolerance;
-  solver.m_erp2 = physics_.contact_erp;
-  solver.m_linearSlop = physics_.contact_slop;
-  b.ground.setCollisionShape(&b.ground_shape);
-  b.ground.setFriction(environment_.ground.friction);
-  b.ground.setRestitution(environment_.ground.restitution);
-  b.ground.setUserIndex(kGroundIndex);
-  anchorFriction(b.ground);
-  if (environment_.ground.kind == Ground::Kind::heightfield) {
-    // the terrain, and the plane under its lowest point to catch what leaves it
-    const Heightfield& field = environment_.ground.heightfield;
-    const auto [low, high] = std::minmax_element(field.heights->begin(), field.heights->end());
-    b.terrain_shape = std::make_unique<btHeightfieldTerrainShape>(
-        field.samples, field.samples, field.heights->data(), btScalar(*low), btScalar(*high), 2,
-        false);
-    b.terrain_shape->setLocalScaling(btVector3(field.spacing, field.spacing, 1));
-    b.terrain.setCollisionShape(b.terrain_shape.get());
-    // Bullet centres the shape on its bounds' middle height
-    b.terrain.setWorldTransform(
-        btTransform(btQuaternion::getIdentity(), btVector3(0, 0, (*low + *high) / 2)));
-    b.terrain.setFriction(environment_.ground.friction);
-    b.terrain.setRestitution(environment_.ground.restitution);
-    b.terrain.setUserIndex(kGroundIndex);
-    anchorFriction(b.terrain);
-    b.world.addCollisionObject(&b.terrain, btBroadphaseProxy::StaticFilter,
-                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-    b.has_terrain = true;
-    b.ground.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, 0, *low)));
-  }
-  if (environment_.ground.kind != Ground::Kind::none) {
-    b.world.addCollisionObject(&b.ground, btBroadphaseProxy::StaticFilter,
-                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-    b.has_ground = true;
-  }
+  setSolverInfo(b.world.getSolverInfo(), physics_);
+  b.ground.add(b.world, environment_, physics_);
 
   // count Bullet links: a k-DoF joint is k links (k-1 virtual), fixed is one fixed link
   int link_count = 0;
@@ -615,7 +484,7 @@ void FeatherstoneWorld::build(double birth_height) {
   Vec3 base_position = root.pose.position + Vec3{0, 0, birth_height - lowest};
   // on hills: above the highest ground under the body
   if (environment_.ground.kind == Ground::Kind::heightfield)
-    base_position.z += highestGroundUnder(plan_.parts);
+    base_position.z += highestGroundUnder(environment_, plan_.parts);
 
   // the multibody: root part is the floating base
   b.body = std::make_unique<btMultiBody>(link_count, root.mass,
@@ -695,7 +564,7 @@ void FeatherstoneWorld::build(double birth_height) {
     collider->setFriction(part.material.friction);
     collider->setRestitution(part.material.restitution < 0 ? physics_.restitution
                                                            : part.material.restitution);
-    anchorFriction(*collider);
+    anchorFriction(*collider, physics_);
     if (i == 0) {
       body.setBaseCollider(collider.get());
     } else {
@@ -744,7 +613,7 @@ void FeatherstoneWorld::build(double birth_height) {
   ground_contact_.assign(part_count, 0);
 
   // the environment's free objects, after the creature, then what the creature holds
-  addObjects();
+  b.objects.addObjects(b.world, environment_, physics_);
   addHeldObjects();
 
   // the momentum kept to what the outside forces give, where they are all known
@@ -768,68 +637,11 @@ void FeatherstoneWorld::build(double birth_height) {
   }
 }
 
-double FeatherstoneWorld::highestGroundUnder(const std::vector<PartPlan>& parts) const {
-  double x_low = 0, x_high = 0, y_low = 0, y_high = 0;
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    const PartPlan& part = parts[i];
-    const Vec3 at = part.pose.position;
-    auto reach = [&](Vec3 direction) {
-      return shapeReach(part.shape, part.size, part.pose.rotation, direction);
-    };
-    const double xl = at.x - reach({-1, 0, 0}), xh = at.x + reach({1, 0, 0});
-    const double yl = at.y - reach({0, -1, 0}), yh = at.y + reach({0, 1, 0});
-    x_low = i == 0 ? xl : std::min(x_low, xl);
-    x_high = i == 0 ? xh : std::max(x_high, xh);
-    y_low = i == 0 ? yl : std::min(y_low, yl);
-    y_high = i == 0 ? yh : std::max(y_high, yh);
-  }
-  return environment_.ground.highestIn(x_low, x_high, y_low, y_high);
-}
-
-void FeatherstoneWorld::addObjects() {
-  FeatherstoneObjects& b = *bullet_;
-  for (std::size_t k = 0; k < environment_.objects.size(); ++k) {
-    const FreeObject& object = environment_.objects[k];
-    Vec3 position = object.pose.position;
-    // on hills: as high above the ground under it as above z = 0
-    if (environment_.ground.kind == Ground::Kind::heightfield) {
-      PartPlan footprint;
-      footprint.shape = object.shape;
-      footprint.size = object.size;
-      footprint.pose = object.pose;
-      position.z += highestGroundUnder({footprint});
-    }
-    const btTransform start(toBt(object.pose.rotation), toBt(position));
-    b.world.addRigidBody(
-        &addRigidBody(object.shape, object.size, object.mass, object.material, start));
-  }
-}
-
-btRigidBody& FeatherstoneWorld::addRigidBody(PartShape shape_kind, Vec3 size, double mass,
-                                             const Material& material, const btTransform& start) {
-  // the shape, the motion state and the body, kept by the world's objects; not yet in the world
-  FeatherstoneObjects& b = *bullet_;
-  b.object_shapes.push_back(shapeOf(shape_kind, size));
-  btCollisionShape* shape = b.object_shapes.back().get();
-  btVector3 inertia(0, 0, 0);
-  if (mass > 0)
-    shape->calculateLocalInertia(mass, inertia);
-  b.object_states.push_back(std::make_unique<btDefaultMotionState>(start));
-  btRigidBody::btRigidBodyConstructionInfo info(mass, b.object_states.back().get(), shape, inertia);
-  info.m_friction = material.friction;
-  info.m_restitution = material.restitution < 0 ? physics_.restitution : material.restitution;
-  b.objects.push_back(std::make_unique<btRigidBody>(info));
-  btRigidBody& body = *b.objects.back();
-  body.setUserIndex(objectIndex(static_cast<int>(b.objects.size() - 1)));
-  anchorFriction(body);
-  return body;
-}
-
 void FeatherstoneWorld::addHeldObjects() {
   // each a free body at its place on the holding part, fixed to it by a constraint, not
   // colliding with it while held
   FeatherstoneObjects& b = *bullet_;
-  held_first_ = b.objects.size();
+  held_first_ = b.objects.bodies.size();
   released_.assign(plan_.held.size(), false);
   for (std::size_t h = 0; h < plan_.held.size(); ++h) {
     const HeldObject& held = plan_.held[h];
@@ -840,8 +652,8 @@ void FeatherstoneWorld::addHeldObjects() {
     }
     PartCollider& holder = *b.colliders[static_cast<std::size_t>(held.part)];
     const btTransform in_part(toBt(held.pose.rotation), toBt(held.pose.position));
-    btRigidBody& object = addRigidBody(held.shape, held.size, held.mass, held.material,
-                                       holder.getWorldTransform() * in_part);
+    btRigidBody& object = b.objects.add(held.shape, held.size, held.mass, held.material,
+                                        holder.getWorldTransform() * in_part, physics_);
     object.setActivationState(DISABLE_DEACTIVATION);
     object.setIgnoreCollisionCheck(&holder, true);
     b.world.addRigidBody(&object);
@@ -867,100 +679,32 @@ void FeatherstoneWorld::release(std::span<const double> commands) {
     b.world.removeMultiBodyConstraint(b.holds[h].get());
     b.holds[h].reset();
     released_[h] = true;
-    btRigidBody& object = *b.objects[held_first_ + h];
+    btRigidBody& object = *b.objects.bodies[held_first_ + h];
     object.setIgnoreCollisionCheck(b.colliders[static_cast<std::size_t>(plan_.held[h].part)].get(),
                                    false);
   }
 }
 
-int FeatherstoneWorld::heldIndex(int user_index) const {
-  const int h = -2 - user_index - static_cast<int>(held_first_);
-  return user_index <= -2 && h >= 0 && h < static_cast<int>(plan_.held.size()) ? h : -1;
-}
 
 Transform FeatherstoneWorld::heldPose(int held) const {
   return objectPose(static_cast<int>(held_first_) + held);
 }
 
 void FeatherstoneWorld::checkBirthPenetration() {
-  FeatherstoneObjects& b = *bullet_;
-
-  // run collision detection once on the birth pose
-  b.world.performDiscreteCollisionDetection();
-  btDispatcher* dispatcher = b.world.getDispatcher();
-  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    int part_a = manifold->getBody0()->getUserIndex();
-    int part_b = manifold->getBody1()->getUserIndex();
-    // parts with parts, and held objects with parts (the ground and the environment's objects
-    // do not count)
-    const int held_a = heldIndex(part_a), held_b = heldIndex(part_b);
-    if ((part_a < 0 && held_a < 0) || (part_b < 0 && held_b < 0) || (held_a >= 0 && held_b >= 0))
-      continue;
-    for (int c = 0; c < manifold->getNumContacts(); ++c) {
-      double depth = manifold->getContactPoint(c).getDistance();
-      if (depth < -physics_.penetration_tolerance) {
-        std::ostringstream message;
-        if (held_a >= 0 || held_b >= 0)
-          message << "held object " << std::max(held_a, held_b) << " and part "
-                  << std::max(part_a, part_b) << " overlap by " << -depth << " m at birth";
-        else
-          message << "parts " << std::min(part_a, part_b) << " and " << std::max(part_a, part_b)
-                  << " overlap by " << -depth << " m at birth";
-        refuse(EvalStatus::self_penetration, message.str());
-        return;
-      }
-    }
-  }
+  std::string overlap = birthOverlap(bullet_->world, static_cast<int>(held_first_),
+                                     static_cast<int>(plan_.held.size()),
+                                     physics_.penetration_tolerance);
+  if (!overlap.empty())
+    refuse(EvalStatus::self_penetration, std::move(overlap));
 }
 
 const std::vector<std::uint8_t>& FeatherstoneWorld::contacts() {
-  // every touching point marks, on each part it joins, the face that looks most nearly towards
-  // the other body (the contact normal in the part's frame: a box's corner lies on three faces,
-  // its normal picks the one pressed)
-  std::fill(contact_.begin(), contact_.end(), 0);
-  auto mark = [this](int part, const btVector3& towards_other) {
-    if (part < 0)
-      return;  // the ground or an object
-    const btVector3 local =
-        bullet_->colliders[part]->getWorldTransform().getBasis().transpose() * towards_other;
-    const int axis = local.closestAxis();
-    contact_[part] |= static_cast<std::uint8_t>(1u << (2 * axis + (local[axis] < 0 ? 1 : 0)));
-  };
-  btDispatcher* dispatcher = bullet_->world.getDispatcher();
-  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    const int part_a = manifold->getBody0()->getUserIndex();
-    const int part_b = manifold->getBody1()->getUserIndex();
-    for (int c = 0; c < manifold->getNumContacts(); ++c) {
-      const btManifoldPoint& point = manifold->getContactPoint(c);
-      if (point.getDistance() > 0.001)
-        continue;
-      mark(part_a, -point.m_normalWorldOnB);  // the normal on B points towards A
-      mark(part_b, point.m_normalWorldOnB);
-    }
-  }
+  markContactFaces(*bullet_->world.getDispatcher(), contact_);
   return contact_;
 }
 
 const std::vector<std::uint8_t>& FeatherstoneWorld::groundContacts() {
-  // every touching point between a part and the ground (plane or terrain)
-  std::fill(ground_contact_.begin(), ground_contact_.end(), 0);
-  btDispatcher* dispatcher = bullet_->world.getDispatcher();
-  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    const int a = manifold->getBody0()->getUserIndex();
-    const int b = manifold->getBody1()->getUserIndex();
-    const int part = a == kGroundIndex ? b : b == kGroundIndex ? a : -1;
-    if (part < 0)
-      continue;
-    for (int c = 0; c < manifold->getNumContacts(); ++c) {
-      if (manifold->getContactPoint(c).getDistance() <= 0.001) {
-        ground_contact_[part] = 1;
-        break;
-      }
-    }
-  }
+  markGroundContacts(*bullet_->world.getDispatcher(), ground_contact_);
   return ground_contact_;
 }
 
@@ -981,6 +725,27 @@ JointSpeed FeatherstoneWorld::fastestJoint() const {
     }
   }
   return fastest;
+}
+
+Vec3 FeatherstoneWorld::jointAxis(int part, int dof) const {
+  const int link = dof_link_[part][dof];
+  if (link < 0)
+    return {};
+  const btMultibodyLink& joint = bullet_->body->getLink(link);
+  const btVector3& axis = joint.m_jointType == btMultibodyLink::ePrismatic
+                              ? joint.getAxisBottom(0)
+                              : joint.getAxisTop(0);
+  return fromBt(bullet_->body->localDirToWorld(link, axis));
+}
+
+double FeatherstoneWorld::partMass(int part) const {
+  const int link = part_link_[part];
+  return link < 0 ? bullet_->body->getBaseMass() : bullet_->body->getLinkMass(link);
+}
+
+Vec3 FeatherstoneWorld::partInertia(int part) const {
+  const int link = part_link_[part];
+  return fromBt(link < 0 ? bullet_->body->getBaseInertia() : bullet_->body->getLinkInertia(link));
 }
 
 Vec3 FeatherstoneWorld::directionInPart(int part, Vec3 point) const {
@@ -1074,22 +839,8 @@ void FeatherstoneWorld::applyDrag(double substep) {
     drag_torque_ = drag_torque_ + fromBt(torque + (frame.getOrigin() - toBt(centre_)).cross(force));
   }
   // the free objects: the same in their own frames (fixed ones do not move)
-  for (std::size_t k = 0; k < b.objects.size(); ++k) {
-    btRigidBody& object = *b.objects[k];
-    if (object.getInvMass() == 0)
-      continue;
-    const btMatrix3x3& basis = object.getWorldTransform().getBasis();
-    const btVector3 inverse_inertia = object.getInvInertiaDiagLocal();
-    auto invert = [](double value) { return value > 0 ? 1 / value : 0.0; };
-    const Vec3 inertia{invert(inverse_inertia.x()), invert(inverse_inertia.y()),
-                       invert(inverse_inertia.z())};
-    const Wrench drag =
-        dragOverStep(drag_[parts + k], 1 / object.getInvMass(), inertia,
-                     fromBt(basis.transpose() * object.getLinearVelocity()),
-                     fromBt(basis.transpose() * object.getAngularVelocity()), substep);
-    object.applyCentralForce(basis * toBt(drag.force));
-    object.applyTorque(basis * toBt(drag.torque));
-  }
+  for (std::size_t k = 0; k < b.objects.bodies.size(); ++k)
+    applyFluidDrag(*b.objects.bodies[k], drag_[parts + k], substep);
 }
 
 void FeatherstoneWorld::correctMomentum(double substep) {
@@ -1214,17 +965,8 @@ double FeatherstoneWorld::mechanicalEnergy() const {
     }
   }
   // what the creature holds or has thrown is its own
-  for (std::size_t k = held_first_; k < b.objects.size(); ++k) {
-    const btRigidBody& object = *b.objects[k];
-    const double mass = 1 / object.getInvMass();
-    const btVector3 w =
-        object.getWorldTransform().getBasis().transpose() * object.getAngularVelocity();
-    const btVector3 inverse = object.getInvInertiaDiagLocal();
-    energy += 0.5 * mass * object.getLinearVelocity().length2() +
-              0.5 * (w.x() * w.x() / inverse.x() + w.y() * w.y() / inverse.y() +
-                     w.z() * w.z() / inverse.z()) +
-              mass * g * object.getWorldTransform().getOrigin().z();
-  }
+  for (std::size_t k = held_first_; k < b.objects.bodies.size(); ++k)
+    energy += rigidBodyEnergy(*b.objects.bodies[k], g);
   return energy;
 }
 
@@ -1251,7 +993,7 @@ double FeatherstoneWorld::lowestPoint() const {
 
 Transform FeatherstoneWorld::objectPose(int object) const {
   const btTransform& transform =
-      bullet_->objects.at(static_cast<std::size_t>(object))->getWorldTransform();
+      bullet_->objects.bodies.at(static_cast<std::size_t>(object))->getWorldTransform();
   return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
 }
 

@@ -40,6 +40,9 @@ class FeatherstoneWorld : public World {
   Transform partPose(int part) const override;
   double jointPosition(int part, int dof) const override;
   JointSpeed fastestJoint() const override;
+  Vec3 jointAxis(int part, int dof) const override;
+  double partMass(int part) const override;
+  Vec3 partInertia(int part) const override;
   const std::vector<std::uint8_t>& contacts() override;
   const std::vector<std::uint8_t>& groundContacts() override;
   Vec3 directionInPart(int part, Vec3 point) const override;
@@ -52,21 +55,14 @@ class FeatherstoneWorld : public World {
 
  private:
   void build(double birth_height);
-  void addObjects();
   void addHeldObjects();
-  // at least the highest ground z under the parts' bounding boxes (hills)
-  double highestGroundUnder(const std::vector<PartPlan>& parts) const;
-  btRigidBody& addRigidBody(PartShape shape, Vec3 size, double mass, const Material& material,
-                            const btTransform& start);
   void release(std::span<const double> commands);
-  int heldIndex(int user_index) const;  // the held object a collision object is, or -1
   void checkBirthPenetration();
   void stopSelfContacts();
   void applyTorques(std::span<const double> commands, double substep);
   void applyDrag(double substep);
   void correctMomentum(double substep);
   void addEffectorWorkBound(std::span<const double> commands, double substep);
-  void anchorFriction(btCollisionObject& object) const;
   void refuse(EvalStatus status, std::string message);
 
   const BodyPlan& plan_;

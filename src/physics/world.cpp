@@ -4,6 +4,7 @@
 #include "cambrian/error.hpp"
 
 #include "physics/featherstone_world.hpp"
+#include "physics/rigid_body_world.hpp"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -15,6 +16,12 @@ const std::vector<WorldKind>& worldKinds() {
        [](const BodyPlan& plan, const Environment& environment, const PhysicsSettings& physics,
           double birth_height) -> std::unique_ptr<World> {
          return std::make_unique<FeatherstoneWorld>(plan, environment, physics, birth_height);
+       }},
+      {RigidBodyWorld::kName,
+       "Bullet rigid bodies joined by 6-DoF constraints (closed loops allowed; Minemonics)",
+       [](const BodyPlan& plan, const Environment& environment, const PhysicsSettings& physics,
+          double birth_height) -> std::unique_ptr<World> {
+         return std::make_unique<RigidBodyWorld>(plan, environment, physics, birth_height);
        }},
   };
   return registered;

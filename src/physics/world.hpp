@@ -1,6 +1,6 @@
 // cambrian: physics worlds as plug-ins. A World holds one creature (a BodyPlan) in an
 // environment and steps it; the Bullet Featherstone multibody world is the first, a constrained
-// rigid-body world will be the second (physics.world). Everything a task, a sensor or a monitor
+// rigid-body world (rigid_body_world.hpp) the second; physics.world chooses. Everything a task, a sensor or a monitor
 // reads goes through this interface.
 #pragma once
 
@@ -50,6 +50,14 @@ class World {
   /// Position of degree of freedom `dof` of the joint between `part` and its parent (radians,
   /// prismatic: m); 0 for a fixed joint.
   virtual double jointPosition(int part, int dof) const = 0;
+  /// The world direction of the axis of degree of freedom `dof` of the joint between `part` and
+  /// its parent (for a multi-degree-of-freedom joint: where the earlier degrees of freedom have
+  /// turned it); zero for a part without that degree of freedom.
+  virtual Vec3 jointAxis(int part, int dof) const = 0;
+  /// Part `part`'s mass as simulated, kg.
+  virtual double partMass(int part) const = 0;
+  /// Part `part`'s principal moments of inertia about its centre, in its own frame, kg m^2.
+  virtual Vec3 partInertia(int part) const = 0;
   /// The joint degree of freedom turning fastest after the last step: its part, dof and speed
   /// (rad/s, prismatic: m/s); speed 0 for a body without joints.
   virtual JointSpeed fastestJoint() const = 0;

@@ -1,0 +1,506 @@
+// cambrian: the Bullet constrained rigid-body world.
+#include "physics/rigid_body_world.hpp"
+
+#include "physics/bullet_scene.hpp"
+
+#include <BulletDynamics/ConstraintSolver/btFixedConstraint.h>
+#include <BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h>
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cambrian {
+
+namespace {
+
+// a part's body: collides with the ground, the objects and, while `self_contacts` is set, with
+// the creature's other parts except those a joint ties it to (Bullet skips those pairs of
+// constrained bodies). Its user index is its part.
+class PartBody : public btRigidBody {
+ public:
+  PartBody(const btRigidBodyConstructionInfo& info, int part, const bool* self_contacts)
+      : btRigidBody(info), self_contacts_(self_contacts) {
+    setUserIndex(part);
+  }
+  bool checkCollideWithOverride(const btCollisionObject* other) const override {
+    if (other->getUserIndex() >= 0 && !*self_contacts_)
+      return false;
+    return btRigidBody::checkCollideWithOverride(other);
+  }
+
+ private:
+  const bool* self_contacts_;
+};
+
+// the rotation whose columns are the joint's axes, made orthonormal in their order (the
+// directed graph's already are)
+btMatrix3x3 axesFrame(const std::array<Vec3, 3>& axes) {
+  btVector3 x = toBt(axes[0]).normalized();
+  btVector3 y = toBt(axes[1]) - x * x.dot(toBt(axes[1]));
+  if (y.length2() < 1e-12)
+    y = x.cross(std::abs(x.z()) < 0.9 ? btVector3(0, 0, 1) : btVector3(1, 0, 0));
+  y.normalize();
+  const btVector3 z = x.cross(y);
+  return btMatrix3x3(x.x(), y.x(), z.x(), x.y(), y.y(), z.y(), x.z(), y.z(), z.z());
+}
+
+// constraint axis index (Bullet: 0-2 linear, 3-5 angular) of degree of freedom `dof`
+int constraintAxis(JointType joint, int dof) {
+  return joint == JointType::prismatic ? dof : 3 + dof;
+}
+
+}  // namespace
+
+// the Bullet objects of one world, destroyed in reverse order of creation
+struct RigidBodyObjects {
+  btDefaultCollisionConfiguration configuration{creaturePools()};
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  BulletGround ground;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
+  std::vector<std::unique_ptr<PartBody>> parts;  // BodyPlan order
+  // per part its tree joint (null for the root), then the loop joints
+  std::vector<std::unique_ptr<btGeneric6DofSpring2Constraint>> joints, loops;
+  FreeBodies objects;                                     // Environment::objects, then held
+  std::vector<std::unique_ptr<btFixedConstraint>> holds;  // per held object, null: let go
+  bool self_contacts = true;  // parts touch each other (always at the birth check)
+
+  ~RigidBodyObjects() {
+    for (auto& hold : holds)
+      if (hold)
+        world.removeConstraint(hold.get());
+    for (auto& object : objects.bodies)
+      world.removeRigidBody(object.get());
+    for (auto& loop : loops)
+      world.removeConstraint(loop.get());
+    for (auto& joint : joints)
+      if (joint)
+        world.removeConstraint(joint.get());
+    for (auto& part : parts)
+      world.removeRigidBody(part.get());
+  }
+};
+
+RigidBodyWorld::RigidBodyWorld(const BodyPlan& plan, const Environment& environment,
+                               const PhysicsSettings& physics, double birth_height)
+    : plan_(plan), environment_(environment), physics_(physics) {
+  build(birth_height);
+  if (birth_status_ == EvalStatus::ok) {
+    std::string overlap = birthOverlap(bullet_->world, static_cast<int>(held_first_),
+                                       static_cast<int>(plan_.held.size()),
+                                       physics_.penetration_tolerance);
+    if (!overlap.empty())
+      refuse(EvalStatus::self_penetration, std::move(overlap));
+  }
+  if (!bullet_->parts.empty() && !physics_.self_collision) {
+    bullet_->self_contacts = false;
+    dropPartPairs(bullet_->world);
+  }
+}
+
+RigidBodyWorld::~RigidBodyWorld() = default;
+
+void RigidBodyWorld::refuse(EvalStatus status, std::string message) {
+  if (birth_status_ != EvalStatus::ok)
+    return;
+  birth_status_ = status;
+  birth_message_ = std::move(message);
+}
+
+void RigidBodyWorld::build(double birth_height) {
+  bullet_ = std::make_unique<RigidBodyObjects>();
+  RigidBodyObjects& b = *bullet_;
+  const int part_count = static_cast<int>(plan_.parts.size());
+  if (part_count == 0) {
+    refuse(EvalStatus::invalid_body, "the body plan has no parts");
+    return;
+  }
+  for (int i = 0; i < part_count; ++i) {
+    if (!(plan_.parts[i].mass > 0)) {
+      refuse(EvalStatus::invalid_body, "part " + std::to_string(i) + " has no mass");
+      return;
+    }
+  }
+
+  // world: the environment's gravity, fixed-step solver settings, the ground
+  if (physics_.ground_contact_corners)
+    b.configuration.setPlaneConvexMultipointIterations();
+  gravity_ = environment_.gravity.value_or(physics_.gravity);
+  b.world.setGravity(btVector3(0, 0, -gravity_));
+  setSolverInfo(b.world.getSolverInfo(), physics_);
+  b.ground.add(b.world, environment_, physics_);
+
+  // place the creature as the Featherstone world does: lowest point at z = birth_height (on
+  // hills above the highest ground under it), each child where its joint puts it
+  double lowest = 0;
+  for (int i = 0; i < part_count; ++i) {
+    const double z = lowestZ(plan_.parts[i], plan_.parts[i].pose);
+    if (i == 0 || z < lowest)
+      lowest = z;
+  }
+  Vec3 base_position = plan_.parts[0].pose.position + Vec3{0, 0, birth_height - lowest};
+  if (environment_.ground.kind == Ground::Kind::heightfield)
+    base_position.z += highestGroundUnder(environment_, plan_.parts);
+  std::vector<btTransform> start(part_count);
+  start[0] = btTransform(toBt(plan_.parts[0].pose.rotation), toBt(base_position));
+  for (int i = 1; i < part_count; ++i) {
+    const PartPlan& part = plan_.parts[i];
+    const btTransform& parent = start[part.parent];
+    const btQuaternion rotation = parent.getRotation() * toBt(part.parent_to_child);
+    const btVector3 pivot = parent * toBt(part.pivot_in_parent);
+    start[i] = btTransform(rotation, pivot - quatRotate(rotation, toBt(part.pivot_in_child)));
+  }
+
+  // the parts, each with its material
+  max_torque_.assign(part_count, 0);
+  for (int i = 0; i < part_count; ++i) {
+    const PartPlan& part = plan_.parts[i];
+    b.shapes.push_back(shapeOf(part.shape, part.size));
+    btRigidBody::btRigidBodyConstructionInfo info(
+        part.mass, nullptr, b.shapes.back().get(), inertiaOf(part.shape, part.size, part.mass));
+    info.m_startWorldTransform = start[i];
+    info.m_friction = part.material.friction;
+    info.m_restitution =
+        part.material.restitution < 0 ? physics_.restitution : part.material.restitution;
+    b.parts.push_back(std::make_unique<PartBody>(info, i, &b.self_contacts));
+    PartBody& body = *b.parts.back();
+    body.setActivationState(DISABLE_DEACTIVATION);
+    anchorFriction(body, physics_);
+    b.world.addRigidBody(&body);
+    max_torque_[i] = physics_.strength_per_area * part.cross_section;
+  }
+  addJoints();
+  contact_.assign(part_count, 0);
+  ground_contact_.assign(part_count, 0);
+
+  // the environment's free objects, after the creature, then what the creature holds
+  b.objects.addObjects(b.world, environment_, physics_);
+  addHeldObjects();
+
+  // the fluid's drag on every part and object (Sims' water)
+  if (environment_.fluid.viscosity > 0) {
+    for (const PartPlan& part : plan_.parts)
+      drag_.push_back(viscousDrag(part.shape, part.size, environment_.fluid.viscosity));
+    for (const FreeObject& object : environment_.objects)
+      drag_.push_back(viscousDrag(object.shape, object.size, environment_.fluid.viscosity));
+    for (const HeldObject& held : plan_.held)
+      drag_.push_back(viscousDrag(held.shape, held.size, environment_.fluid.viscosity));
+  }
+}
+
+void RigidBodyWorld::addJoints() {
+  // a 6-DoF constraint per joint: the frame's axes are the joint's, its free axes the joint's
+  // degrees of freedom within their limits, every other axis locked; joint damping as a spring
+  // of no stiffness (Bullet bounds its damping so it cannot reverse a light limb); saturated
+  // motors on the effectors' axes, idle until the controller drives them
+  RigidBodyObjects& b = *bullet_;
+  auto make = [&](btRigidBody& a, btRigidBody& c, const btTransform& in_a, const btTransform& in_c,
+                  JointType joint, Vec3 limit) {
+    auto constraint =
+        std::make_unique<btGeneric6DofSpring2Constraint>(a, c, in_a, in_c, RO_XYZ);
+    for (int axis = 0; axis < 6; ++axis)
+      constraint->setLimit(axis, 0, 0);
+    const int dofs = degreesOfFreedom(joint);
+    for (int d = 0; d < dofs; ++d) {
+      const int axis = constraintAxis(joint, d);
+      constraint->setLimit(axis, -limit[d], limit[d]);
+      if (physics_.implicit_damping && physics_.joint_damping > 0) {
+        constraint->enableSpring(axis, true);
+        constraint->setStiffness(axis, 0);
+        constraint->setDamping(axis, physics_.joint_damping);
+      }
+    }
+    b.world.addConstraint(constraint.get(), true);
+    return constraint;
+  };
+
+  b.joints.push_back(nullptr);  // the root's
+  for (std::size_t i = 1; i < plan_.parts.size(); ++i) {
+    const PartPlan& part = plan_.parts[i];
+    const btMatrix3x3 frame = axesFrame(part.axes);
+    const btTransform in_child(frame, toBt(part.pivot_in_child));
+    const btTransform in_parent(btMatrix3x3(toBt(part.parent_to_child)) * frame,
+                                toBt(part.pivot_in_parent));
+    b.joints.push_back(make(*b.parts[part.parent], *b.parts[i], in_parent, in_child, part.joint,
+                            part.joint_limit));
+  }
+  for (const LoopJoint& loop : plan_.loops) {
+    const int part_count = static_cast<int>(plan_.parts.size());
+    if (loop.part_a < 0 || loop.part_b < 0 || loop.part_a >= part_count ||
+        loop.part_b >= part_count || loop.part_a == loop.part_b) {
+      refuse(EvalStatus::invalid_body, "a loop joint joins parts " + std::to_string(loop.part_a) +
+                                           " and " + std::to_string(loop.part_b) +
+                                           ", not two different parts of the body");
+      return;
+    }
+    btRigidBody& a = *b.parts[loop.part_a];
+    btRigidBody& c = *b.parts[loop.part_b];
+    const btMatrix3x3 frame = axesFrame(loop.axes);
+    const btTransform in_b(frame, toBt(loop.pivot_in_b));
+    const btMatrix3x3 b_in_a =
+        a.getWorldTransform().getBasis().transpose() * c.getWorldTransform().getBasis();
+    const btTransform in_a(b_in_a * frame, toBt(loop.pivot_in_a));
+    b.loops.push_back(make(a, c, in_a, in_b, loop.joint, loop.joint_limit));
+  }
+  if (physics_.actuation == Actuation::saturated_motor) {
+    for (const EffectorPlan& effector : plan_.effectors) {
+      if (effector.kind != EffectorKind::joint || effector.part <= 0)
+        continue;
+      const PartPlan& part = plan_.parts[static_cast<std::size_t>(effector.part)];
+      if (effector.dof < degreesOfFreedom(part.joint))
+        b.joints[effector.part]->enableMotor(constraintAxis(part.joint, effector.dof), true);
+    }
+  }
+}
+
+void RigidBodyWorld::addHeldObjects() {
+  // each a free body at its place on the holding part, fixed to it by a constraint (which keeps
+  // the two from colliding while held)
+  RigidBodyObjects& b = *bullet_;
+  held_first_ = b.objects.bodies.size();
+  released_.assign(plan_.held.size(), false);
+  for (std::size_t h = 0; h < plan_.held.size(); ++h) {
+    const HeldObject& held = plan_.held[h];
+    if (held.part < 0 || held.part >= static_cast<int>(plan_.parts.size()) || !(held.mass > 0)) {
+      refuse(EvalStatus::invalid_body, "held object " + std::to_string(h) + " names part " +
+                                           std::to_string(held.part) + " or has no mass");
+      return;
+    }
+    btRigidBody& holder = *b.parts[static_cast<std::size_t>(held.part)];
+    const btTransform in_part(toBt(held.pose.rotation), toBt(held.pose.position));
+    btRigidBody& object = b.objects.add(held.shape, held.size, held.mass, held.material,
+                                        holder.getWorldTransform() * in_part, physics_);
+    object.setActivationState(DISABLE_DEACTIVATION);
+    b.world.addRigidBody(&object);
+    b.holds.push_back(
+        std::make_unique<btFixedConstraint>(holder, object, in_part, btTransform::getIdentity()));
+    b.world.addConstraint(b.holds.back().get(), true);
+  }
+}
+
+void RigidBodyWorld::release(std::span<const double> commands) {
+  RigidBodyObjects& b = *bullet_;
+  for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
+    const EffectorPlan& effector = plan_.effectors[e];
+    if (effector.kind != EffectorKind::release || !(commands[e] > kReleaseCommand))
+      continue;
+    const auto h = static_cast<std::size_t>(effector.dof);
+    if (h >= b.holds.size() || !b.holds[h])
+      continue;
+    b.world.removeConstraint(b.holds[h].get());  // and the two collide again
+    b.holds[h].reset();
+    released_[h] = true;
+  }
+}
+
+void RigidBodyWorld::applyTorques(std::span<const double> commands) {
+  RigidBodyObjects& b = *bullet_;
+  const bool explicit_damping = !physics_.implicit_damping && physics_.joint_damping > 0;
+  const bool torques = physics_.actuation == Actuation::torque && !commands.empty();
+  // a torque (prismatic: force) along a joint's axis, on the child and against the parent
+  auto push = [&](int part, int dof, double amount) {
+    const PartPlan& plan = plan_.parts[static_cast<std::size_t>(part)];
+    const btVector3 axis = toBt(jointAxis(part, dof));
+    btRigidBody& child = *b.parts[static_cast<std::size_t>(part)];
+    btRigidBody& parent = *b.parts[static_cast<std::size_t>(plan.parent)];
+    if (plan.joint == JointType::prismatic) {
+      child.applyCentralForce(amount * axis);
+      parent.applyCentralForce(-amount * axis);
+    } else {
+      child.applyTorque(amount * axis);
+      parent.applyTorque(-amount * axis);
+    }
+  };
+  if (explicit_damping || torques) {
+    for (auto& joint : b.joints)
+      if (joint)
+        joint->calculateTransforms();
+  }
+  if (explicit_damping) {
+    for (std::size_t i = 1; i < plan_.parts.size(); ++i)
+      for (int d = 0; d < degreesOfFreedom(plan_.parts[i].joint); ++d)
+        push(static_cast<int>(i), d,
+             -physics_.joint_damping * jointSpeed(static_cast<int>(i), d));
+  }
+
+  for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
+    const EffectorPlan& effector = plan_.effectors[e];
+    if (effector.kind != EffectorKind::joint || effector.part <= 0)
+      continue;
+    const PartPlan& part = plan_.parts[static_cast<std::size_t>(effector.part)];
+    if (effector.dof >= degreesOfFreedom(part.joint))
+      continue;
+    const double command = commands.empty() ? 0.0 : commands[e];
+    if (physics_.actuation == Actuation::saturated_motor) {
+      // the command's sign picks the target speed, its size the torque budget (Bullet's 6-DoF
+      // motor drives the first body relative to the second: the sign is turned)
+      btGeneric6DofSpring2Constraint& joint = *b.joints[effector.part];
+      const int axis = constraintAxis(part.joint, effector.dof);
+      const double speed = command < 0 ? -physics_.motor_speed : physics_.motor_speed;
+      joint.setTargetVelocity(axis, part.joint == JointType::prismatic ? speed : -speed);
+      joint.setMaxMotorForce(axis, std::abs(command) * max_torque_[effector.part]);
+    } else if (torques) {
+      push(effector.part, effector.dof, command * max_torque_[effector.part]);
+    }
+  }
+}
+
+void RigidBodyWorld::step(std::span<const double> commands) {
+  const double substep = physics_.time_step / physics_.substeps;
+  if (!plan_.held.empty() && !commands.empty())
+    release(commands);
+  RigidBodyObjects& b = *bullet_;
+  for (int k = 0; k < physics_.substeps; ++k) {
+    applyTorques(commands);
+    if (!drag_.empty()) {
+      for (std::size_t i = 0; i < b.parts.size(); ++i)
+        applyFluidDrag(*b.parts[i], drag_[i], substep);
+      for (std::size_t k2 = 0; k2 < b.objects.bodies.size(); ++k2)
+        applyFluidDrag(*b.objects.bodies[k2], drag_[b.parts.size() + k2], substep);
+    }
+    b.world.stepSimulation(substep, 0);
+    // no effector pushes harder than its limit x |command|, at the speed the step ended with
+    if (!commands.empty()) {
+      for (auto& joint : b.joints)
+        if (joint)
+          joint->calculateTransforms();
+      for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
+        const EffectorPlan& effector = plan_.effectors[e];
+        if (effector.kind == EffectorKind::joint && effector.part > 0 &&
+            effector.dof < degreesOfFreedom(plan_.parts[effector.part].joint))
+          work_bound_ += std::abs(commands[e]) * max_torque_[effector.part] *
+                         std::abs(jointSpeed(effector.part, effector.dof)) * substep;
+      }
+    }
+  }
+  for (auto& joint : b.joints)
+    if (joint)
+      joint->calculateTransforms();
+}
+
+double RigidBodyWorld::jointSpeed(int part, int dof) const {
+  // the rate of the joint coordinate: for a slider the child's pivot speed along the axis, for
+  // turning joints the relative angular velocity in the dual basis of the Euler axes
+  const RigidBodyObjects& b = *bullet_;
+  const PartPlan& plan = plan_.parts[static_cast<std::size_t>(part)];
+  const btRigidBody& child = *b.parts[static_cast<std::size_t>(part)];
+  const btRigidBody& parent = *b.parts[static_cast<std::size_t>(plan.parent)];
+  const btGeneric6DofSpring2Constraint& joint = *b.joints[static_cast<std::size_t>(part)];
+  if (plan.joint == JointType::prismatic) {
+    const btVector3 pivot = joint.getCalculatedTransformB().getOrigin();
+    const btVector3 relative =
+        child.getVelocityInLocalPoint(pivot - child.getCenterOfMassPosition()) -
+        parent.getVelocityInLocalPoint(pivot - parent.getCenterOfMassPosition());
+    return relative.dot(joint.getCalculatedTransformA().getBasis().getColumn(0));
+  }
+  const btVector3 spin = child.getAngularVelocity() - parent.getAngularVelocity();
+  const btVector3 a0 = joint.getAxis(0), a1 = joint.getAxis(1), a2 = joint.getAxis(2);
+  const double volume = a0.dot(a1.cross(a2));
+  if (std::abs(volume) < 1e-9)
+    return spin.dot(joint.getAxis(dof));
+  const btVector3 dual = dof == 0 ? a1.cross(a2) : dof == 1 ? a2.cross(a0) : a0.cross(a1);
+  return spin.dot(dual) / volume;
+}
+
+double RigidBodyWorld::jointPosition(int part, int dof) const {
+  if (part <= 0 || dof >= degreesOfFreedom(plan_.parts[static_cast<std::size_t>(part)].joint))
+    return 0;
+  const btGeneric6DofSpring2Constraint& joint = *bullet_->joints[static_cast<std::size_t>(part)];
+  return plan_.parts[static_cast<std::size_t>(part)].joint == JointType::prismatic
+             ? joint.getRelativePivotPosition(dof)
+             : joint.getAngle(dof);
+}
+
+JointSpeed RigidBodyWorld::fastestJoint() const {
+  JointSpeed fastest;
+  for (std::size_t i = 1; i < plan_.parts.size(); ++i) {
+    for (int d = 0; d < degreesOfFreedom(plan_.parts[i].joint); ++d) {
+      const double speed = std::abs(jointSpeed(static_cast<int>(i), d));
+      if (speed > fastest.speed)
+        fastest = {static_cast<int>(i), d, speed};
+    }
+  }
+  return fastest;
+}
+
+Vec3 RigidBodyWorld::jointAxis(int part, int dof) const {
+  if (part <= 0 || dof >= degreesOfFreedom(plan_.parts[static_cast<std::size_t>(part)].joint))
+    return {};
+  const btGeneric6DofSpring2Constraint& joint = *bullet_->joints[static_cast<std::size_t>(part)];
+  if (plan_.parts[static_cast<std::size_t>(part)].joint == JointType::prismatic)
+    return fromBt(joint.getCalculatedTransformA().getBasis().getColumn(0));
+  return fromBt(joint.getAxis(dof));
+}
+
+double RigidBodyWorld::partMass(int part) const {
+  return 1 / bullet_->parts[static_cast<std::size_t>(part)]->getInvMass();
+}
+
+Vec3 RigidBodyWorld::partInertia(int part) const {
+  const btVector3 inverse = bullet_->parts[static_cast<std::size_t>(part)]->getInvInertiaDiagLocal();
+  return {1 / inverse.x(), 1 / inverse.y(), 1 / inverse.z()};
+}
+
+const std::vector<std::uint8_t>& RigidBodyWorld::contacts() {
+  markContactFaces(*bullet_->world.getDispatcher(), contact_);
+  return contact_;
+}
+
+const std::vector<std::uint8_t>& RigidBodyWorld::groundContacts() {
+  markGroundContacts(*bullet_->world.getDispatcher(), ground_contact_);
+  return ground_contact_;
+}
+
+Vec3 RigidBodyWorld::directionInPart(int part, Vec3 point) const {
+  const btTransform& frame = bullet_->parts[static_cast<std::size_t>(part)]->getWorldTransform();
+  btVector3 to_point = frame.getBasis().transpose() * (toBt(point) - frame.getOrigin());
+  const double distance = to_point.length();
+  if (distance > 1e-9)
+    to_point /= distance;
+  return fromBt(to_point);
+}
+
+Vec3 RigidBodyWorld::partPosition(int part) const {
+  return fromBt(bullet_->parts[static_cast<std::size_t>(part)]->getWorldTransform().getOrigin());
+}
+
+Transform RigidBodyWorld::partPose(int part) const {
+  const btTransform& transform = bullet_->parts[static_cast<std::size_t>(part)]->getWorldTransform();
+  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+}
+
+double RigidBodyWorld::lowestPoint() const {
+  double lowest = 0;
+  for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
+    const btTransform& transform = bullet_->parts[i]->getWorldTransform();
+    const double z = transform.getOrigin().z() - reachDown(plan_.parts[i], transform.getBasis());
+    if (i == 0 || z < lowest)
+      lowest = z;
+  }
+  return lowest;
+}
+
+Transform RigidBodyWorld::objectPose(int object) const {
+  const btTransform& transform =
+      bullet_->objects.bodies.at(static_cast<std::size_t>(object))->getWorldTransform();
+  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+}
+
+Transform RigidBodyWorld::heldPose(int held) const {
+  return objectPose(static_cast<int>(held_first_) + held);
+}
+
+double RigidBodyWorld::mechanicalEnergy() const {
+  double energy = 0;
+  for (const auto& part : bullet_->parts)
+    energy += rigidBodyEnergy(*part, gravity_);
+  for (std::size_t k = held_first_; k < bullet_->objects.bodies.size(); ++k)
+    energy += rigidBodyEnergy(*bullet_->objects.bodies[k], gravity_);
+  return energy;
+}
+
+}  // namespace cambrian
