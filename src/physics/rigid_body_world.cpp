@@ -46,6 +46,21 @@ btMatrix3x3 axesFrame(const std::array<Vec3, 3>& axes) {
   return btMatrix3x3(x.x(), y.x(), z.x(), x.y(), y.y(), z.y(), x.z(), y.z(), z.z());
 }
 
+// The joint's turning degrees of freedom are Bullet's Euler angles in the order RO_ZYX: the
+// child's frame relative to the parent's is R(x, -a0) R(y', -a1) R(z'', -a2) for Bullet's angles
+// a0, a1, a2 (its decomposition reads the transpose), so the joint coordinate q_d is -a_d, turning
+// first about the parent-fixed x axis and last about the child-fixed z axis — the Featherstone
+// chain. The rotation axes of the coordinates in world terms: x of the parent's joint frame,
+// z of the child's, and the line of nodes between them.
+std::array<btVector3, 3> eulerAxes(const btGeneric6DofSpring2Constraint& joint) {
+  const btVector3 first = joint.getCalculatedTransformA().getBasis().getColumn(0);
+  const btVector3 last = joint.getCalculatedTransformB().getBasis().getColumn(2);
+  btVector3 middle = last.cross(first);
+  const double length = middle.length();
+  middle = length > 1e-12 ? middle / length : joint.getCalculatedTransformB().getBasis().getColumn(1);
+  return {first, middle, last};
+}
+
 // constraint axis index (Bullet: 0-2 linear, 3-5 angular) of degree of freedom `dof`
 int constraintAxis(JointType joint, int dof) {
   return joint == JointType::prismatic ? dof : 3 + dof;
@@ -201,7 +216,7 @@ void RigidBodyWorld::addJoints() {
   auto make = [&](btRigidBody& a, btRigidBody& c, const btTransform& in_a, const btTransform& in_c,
                   JointType joint, Vec3 limit) {
     auto constraint =
-        std::make_unique<btGeneric6DofSpring2Constraint>(a, c, in_a, in_c, RO_XYZ);
+        std::make_unique<btGeneric6DofSpring2Constraint>(a, c, in_a, in_c, RO_ZYX);
     for (int axis = 0; axis < 6; ++axis)
       constraint->setLimit(axis, 0, 0);
     const int dofs = degreesOfFreedom(joint);
@@ -337,11 +352,11 @@ void RigidBodyWorld::applyTorques(std::span<const double> commands) {
     const double command = commands.empty() ? 0.0 : commands[e];
     if (physics_.actuation == Actuation::saturated_motor) {
       // the command's sign picks the target speed, its size the torque budget (Bullet's 6-DoF
-      // motor drives the first body relative to the second: the sign is turned)
+      // motor drives the parent relative to the child: the sign is turned)
       btGeneric6DofSpring2Constraint& joint = *b.joints[effector.part];
       const int axis = constraintAxis(part.joint, effector.dof);
       const double speed = command < 0 ? -physics_.motor_speed : physics_.motor_speed;
-      joint.setTargetVelocity(axis, part.joint == JointType::prismatic ? speed : -speed);
+      joint.setTargetVelocity(axis, -speed);
       joint.setMaxMotorForce(axis, std::abs(command) * max_torque_[effector.part]);
     } else if (torques) {
       push(effector.part, effector.dof, command * max_torque_[effector.part]);
@@ -398,10 +413,10 @@ double RigidBodyWorld::jointSpeed(int part, int dof) const {
     return relative.dot(joint.getCalculatedTransformA().getBasis().getColumn(0));
   }
   const btVector3 spin = child.getAngularVelocity() - parent.getAngularVelocity();
-  const btVector3 a0 = joint.getAxis(0), a1 = joint.getAxis(1), a2 = joint.getAxis(2);
+  const auto [a0, a1, a2] = eulerAxes(joint);
   const double volume = a0.dot(a1.cross(a2));
   if (std::abs(volume) < 1e-9)
-    return spin.dot(joint.getAxis(dof));
+    return spin.dot(dof == 0 ? a0 : dof == 1 ? a1 : a2);
   const btVector3 dual = dof == 0 ? a1.cross(a2) : dof == 1 ? a2.cross(a0) : a0.cross(a1);
   return spin.dot(dual) / volume;
 }
@@ -412,7 +427,7 @@ double RigidBodyWorld::jointPosition(int part, int dof) const {
   const btGeneric6DofSpring2Constraint& joint = *bullet_->joints[static_cast<std::size_t>(part)];
   return plan_.parts[static_cast<std::size_t>(part)].joint == JointType::prismatic
              ? joint.getRelativePivotPosition(dof)
-             : joint.getAngle(dof);
+             : -joint.getAngle(dof);
 }
 
 JointSpeed RigidBodyWorld::fastestJoint() const {
@@ -433,7 +448,7 @@ Vec3 RigidBodyWorld::jointAxis(int part, int dof) const {
   const btGeneric6DofSpring2Constraint& joint = *bullet_->joints[static_cast<std::size_t>(part)];
   if (plan_.parts[static_cast<std::size_t>(part)].joint == JointType::prismatic)
     return fromBt(joint.getCalculatedTransformA().getBasis().getColumn(0));
-  return fromBt(joint.getAxis(dof));
+  return fromBt(eulerAxes(joint)[static_cast<std::size_t>(dof)]);
 }
 
 double RigidBodyWorld::partMass(int part) const {
