@@ -147,6 +147,9 @@ void RigidBodyWorld::build(double birth_height) {
   gravity_ = environment_.gravity.value_or(physics_.gravity);
   b.world.setGravity(btVector3(0, 0, -gravity_));
   setSolverInfo(b.world.getSolverInfo(), physics_);
+  // friction along both tangent directions of every contact: with one (Bullet's default for
+  // rigid bodies) a resting body jitters against its friction anchors and never comes to rest
+  b.world.getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
   b.ground.add(b.world, environment_, physics_);
 
   // place the creature as the Featherstone world does: lowest point at z = birth_height (on

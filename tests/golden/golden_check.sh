@@ -5,7 +5,8 @@
 # the new lines).
 # usage: golden_check.sh MODE CAMBRIAN MPIEXEC NPFLAG NP WORKDIR [--regenerate]
 #   synthetic: a synthetic-task evolution at NP ranks (1: in process)
-#   walk:      a walking evolution at NP ranks
+#   walk:      a walking evolution at NP ranks, in the Featherstone world and in the rigid-body
+#              world
 #   variants:  at NP ranks, evolutions through the other code paths: jump, explicit torques,
 #              self-collision, Chaumont's normalisation and rest rule, tournament / rank / sus
 #              selection, unconnected nodes collected, seed genomes, Sims' swimming in water and
@@ -101,6 +102,9 @@ case $mode in
   walk)
     evolve walk --config "$source_dir/jobs/experiments/walk.ini" --evolution.population 16 \
       --evolution.generations 4 --task.evaluation_time 2 --seed 3
+    evolve walk_rigid_bodies --config "$source_dir/jobs/experiments/walk.ini" \
+      --physics.world rigid_bodies --evolution.population 16 --evolution.generations 4 \
+      --task.evaluation_time 2 --seed 3
     ;;
   variants)
     common=(--evolution.population 12 --evolution.generations 3 --task.evaluation_time 1.5)
@@ -149,6 +153,15 @@ case $mode in
         --config "$source_dir/jobs/experiments/minemonics/walk-chaotic.ini" \
         --task.evaluation_time 2
     done
+    for creature in walker4 snake; do
+      simulate "simulate_${creature}_walk_rigid_bodies" --genome "$creatures/$creature.genome" \
+        --task walk --physics.world rigid_bodies --task.evaluation_time 3
+    done
+    simulate simulate_minemonics_leg_rigid_bodies --genome "$creatures/minemonics/leg.genome" \
+      --config "$source_dir/jobs/experiments/minemonics/walk-sine.ini" \
+      --physics.world rigid_bodies --task.evaluation_time 2
+    simulate simulate_snake_swim_rigid_bodies --genome "$creatures/snake.genome" --task swim \
+      --environment.name water --physics.world rigid_bodies --task.evaluation_time 2
     simulate simulate_snake_torque --genome "$creatures/snake.genome" --task walk \
       --physics.actuation torque --physics.self_collision true --task.evaluation_time 2
     for seed in 1 2 3 4 5 6; do
