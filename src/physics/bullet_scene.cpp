@@ -127,9 +127,8 @@ BulletGround::~BulletGround() {
     world->removeCollisionObject(&plane);
 }
 
-btRigidBody& FreeBodies::add(PartShape shape_kind, Vec3 size, double mass,
-                             const Material& material, const btTransform& start,
-                             const PhysicsSettings& physics) {
+btRigidBody& FreeBodies::add(PartShape shape_kind, Vec3 size, double mass, const Material& material,
+                             const btTransform& start, const PhysicsSettings& physics) {
   shapes.push_back(shapeOf(shape_kind, size));
   btCollisionShape* shape = shapes.back().get();
   btVector3 inertia(0, 0, 0);
@@ -158,8 +157,8 @@ void FreeBodies::addObjects(btDynamicsWorld& world, const Environment& environme
       position.z += highestGroundUnder(environment, {footprint});
     }
     const btTransform start(toBt(object.pose.rotation), toBt(position));
-    world.addRigidBody(&add(object.shape, object.size, object.mass, object.material, start,
-                            physics));
+    world.addRigidBody(
+        &add(object.shape, object.size, object.mass, object.material, start, physics));
   }
 }
 
@@ -259,9 +258,9 @@ void applyFluidDrag(btRigidBody& body, const DragCoefficients& drag, double subs
   auto invert = [](double value) { return value > 0 ? 1 / value : 0.0; };
   const Vec3 inertia{invert(inverse_inertia.x()), invert(inverse_inertia.y()),
                      invert(inverse_inertia.z())};
-  const Wrench wrench = dragOverStep(drag, 1 / body.getInvMass(), inertia,
-                                     fromBt(basis.transpose() * body.getLinearVelocity()),
-                                     fromBt(basis.transpose() * body.getAngularVelocity()), substep);
+  const Wrench wrench = dragOverStep(
+      drag, 1 / body.getInvMass(), inertia, fromBt(basis.transpose() * body.getLinearVelocity()),
+      fromBt(basis.transpose() * body.getAngularVelocity()), substep);
   body.applyCentralForce(basis * toBt(wrench.force));
   body.applyTorque(basis * toBt(wrench.torque));
 }

@@ -97,8 +97,7 @@ void markGroundContacts(btDispatcher& dispatcher, std::vector<std::uint8_t>& tou
 /// Runs collision detection on the birth pose and describes the first overlap deeper than
 /// `tolerance` between two parts or a part and a held object (held objects are the user indices
 /// objectIndex(held_first) .. objectIndex(held_first + held_count - 1)); empty when none.
-std::string birthOverlap(btCollisionWorld& world, int held_first, int held_count,
-                         double tolerance);
+std::string birthOverlap(btCollisionWorld& world, int held_first, int held_count, double tolerance);
 /// Drops the part-part pairs (and their contact manifolds) the broadphase holds.
 void dropPartPairs(btCollisionWorld& world);
 /// Applies the fluid's drag over a step of `substep` s to a free rigid body (none when fixed).

@@ -685,15 +685,14 @@ void FeatherstoneWorld::release(std::span<const double> commands) {
   }
 }
 
-
 Transform FeatherstoneWorld::heldPose(int held) const {
   return objectPose(static_cast<int>(held_first_) + held);
 }
 
 void FeatherstoneWorld::checkBirthPenetration() {
-  std::string overlap = birthOverlap(bullet_->world, static_cast<int>(held_first_),
-                                     static_cast<int>(plan_.held.size()),
-                                     physics_.penetration_tolerance);
+  std::string overlap =
+      birthOverlap(bullet_->world, static_cast<int>(held_first_),
+                   static_cast<int>(plan_.held.size()), physics_.penetration_tolerance);
   if (!overlap.empty())
     refuse(EvalStatus::self_penetration, std::move(overlap));
 }
@@ -732,9 +731,8 @@ Vec3 FeatherstoneWorld::jointAxis(int part, int dof) const {
   if (link < 0)
     return {};
   const btMultibodyLink& joint = bullet_->body->getLink(link);
-  const btVector3& axis = joint.m_jointType == btMultibodyLink::ePrismatic
-                              ? joint.getAxisBottom(0)
-                              : joint.getAxisTop(0);
+  const btVector3& axis = joint.m_jointType == btMultibodyLink::ePrismatic ? joint.getAxisBottom(0)
+                                                                           : joint.getAxisTop(0);
   return fromBt(bullet_->body->localDirToWorld(link, axis));
 }
 

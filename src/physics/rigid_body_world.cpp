@@ -57,7 +57,8 @@ std::array<btVector3, 3> eulerAxes(const btGeneric6DofSpring2Constraint& joint) 
   const btVector3 last = joint.getCalculatedTransformB().getBasis().getColumn(2);
   btVector3 middle = last.cross(first);
   const double length = middle.length();
-  middle = length > 1e-12 ? middle / length : joint.getCalculatedTransformB().getBasis().getColumn(1);
+  middle =
+      length > 1e-12 ? middle / length : joint.getCalculatedTransformB().getBasis().getColumn(1);
   return {first, middle, last};
 }
 
@@ -105,9 +106,9 @@ RigidBodyWorld::RigidBodyWorld(const BodyPlan& plan, const Environment& environm
     : plan_(plan), environment_(environment), physics_(physics) {
   build(birth_height);
   if (birth_status_ == EvalStatus::ok) {
-    std::string overlap = birthOverlap(bullet_->world, static_cast<int>(held_first_),
-                                       static_cast<int>(plan_.held.size()),
-                                       physics_.penetration_tolerance);
+    std::string overlap =
+        birthOverlap(bullet_->world, static_cast<int>(held_first_),
+                     static_cast<int>(plan_.held.size()), physics_.penetration_tolerance);
     if (!overlap.empty())
       refuse(EvalStatus::self_penetration, std::move(overlap));
   }
@@ -178,8 +179,8 @@ void RigidBodyWorld::build(double birth_height) {
   for (int i = 0; i < part_count; ++i) {
     const PartPlan& part = plan_.parts[i];
     b.shapes.push_back(shapeOf(part.shape, part.size));
-    btRigidBody::btRigidBodyConstructionInfo info(
-        part.mass, nullptr, b.shapes.back().get(), inertiaOf(part.shape, part.size, part.mass));
+    btRigidBody::btRigidBodyConstructionInfo info(part.mass, nullptr, b.shapes.back().get(),
+                                                  inertiaOf(part.shape, part.size, part.mass));
     info.m_startWorldTransform = start[i];
     info.m_friction = part.material.friction;
     info.m_restitution =
@@ -218,8 +219,7 @@ void RigidBodyWorld::addJoints() {
   RigidBodyObjects& b = *bullet_;
   auto make = [&](btRigidBody& a, btRigidBody& c, const btTransform& in_a, const btTransform& in_c,
                   JointType joint, Vec3 limit) {
-    auto constraint =
-        std::make_unique<btGeneric6DofSpring2Constraint>(a, c, in_a, in_c, RO_ZYX);
+    auto constraint = std::make_unique<btGeneric6DofSpring2Constraint>(a, c, in_a, in_c, RO_ZYX);
     for (int axis = 0; axis < 6; ++axis)
       constraint->setLimit(axis, 0, 0);
     const int dofs = degreesOfFreedom(joint);
@@ -341,8 +341,7 @@ void RigidBodyWorld::applyTorques(std::span<const double> commands) {
   if (explicit_damping) {
     for (std::size_t i = 1; i < plan_.parts.size(); ++i)
       for (int d = 0; d < degreesOfFreedom(plan_.parts[i].joint); ++d)
-        push(static_cast<int>(i), d,
-             -physics_.joint_damping * jointSpeed(static_cast<int>(i), d));
+        push(static_cast<int>(i), d, -physics_.joint_damping * jointSpeed(static_cast<int>(i), d));
   }
 
   for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
@@ -459,7 +458,8 @@ double RigidBodyWorld::partMass(int part) const {
 }
 
 Vec3 RigidBodyWorld::partInertia(int part) const {
-  const btVector3 inverse = bullet_->parts[static_cast<std::size_t>(part)]->getInvInertiaDiagLocal();
+  const btVector3 inverse =
+      bullet_->parts[static_cast<std::size_t>(part)]->getInvInertiaDiagLocal();
   return {1 / inverse.x(), 1 / inverse.y(), 1 / inverse.z()};
 }
 
@@ -487,7 +487,8 @@ Vec3 RigidBodyWorld::partPosition(int part) const {
 }
 
 Transform RigidBodyWorld::partPose(int part) const {
-  const btTransform& transform = bullet_->parts[static_cast<std::size_t>(part)]->getWorldTransform();
+  const btTransform& transform =
+      bullet_->parts[static_cast<std::size_t>(part)]->getWorldTransform();
   return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
 }
 

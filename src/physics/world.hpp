@@ -1,7 +1,7 @@
 // cambrian: physics worlds as plug-ins. A World holds one creature (a BodyPlan) in an
 // environment and steps it; the Bullet Featherstone multibody world is the first, a constrained
-// rigid-body world (rigid_body_world.hpp) the second; physics.world chooses. Everything a task, a sensor or a monitor
-// reads goes through this interface.
+// rigid-body world (rigid_body_world.hpp) the second; physics.world chooses. Everything a task, a
+// sensor or a monitor reads goes through this interface.
 #pragma once
 
 #include "cambrian/body_plan.hpp"

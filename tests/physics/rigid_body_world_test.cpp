@@ -4,9 +4,8 @@
 // rests; a held object is carried until released; the same run gives the same bits.
 #include "physics/rigid_body_world.hpp"
 
-#include "physics/featherstone_world.hpp"
-
 #include "box_part.hpp"
+#include "physics/featherstone_world.hpp"
 
 #include <gtest/gtest.h>
 
@@ -176,10 +175,9 @@ TEST(RigidBodyWorld, MotorsAndTorquesDriveEveryJointToItsLimits) {
             continue;
           const double limit = part.joint_limit[effector.dof];
           const double at = world->jointPosition(effector.part, effector.dof);
-          const std::string what = std::string(kind) +
-                                   (actuation == Actuation::torque ? " torque" : " motor") +
-                                   " part " + std::to_string(effector.part) + " dof " +
-                                   std::to_string(effector.dof);
+          const std::string what =
+              std::string(kind) + (actuation == Actuation::torque ? " torque" : " motor") +
+              " part " + std::to_string(effector.part) + " dof " + std::to_string(effector.dof);
           if (actuation == Actuation::saturated_motor)
             EXPECT_NEAR(at, sign * limit, 0.06 * limit) << what;
           else
@@ -300,13 +298,14 @@ TEST(RigidBodyWorld, OverlappingPartsAreRefused) {
   PartPlan inside = box({0.1, 0.1, 0.1}, {0, 0, 0}, 0);
   inside.pivot_in_parent = {0, 0, 0.05};
   inside.pivot_in_child = {0, 0, 0.05};
-  plan.parts.push_back(inside);  // a neighbour of the root: allowed
+  plan.parts.push_back(inside);                                 // a neighbour of the root: allowed
   plan.parts.push_back(box({0.1, 0.1, 0.1}, {0.35, 0, 0}, 5));  // inside part 1
   plan.parts.back().pivot_in_parent = {0.35, 0, 0};
   plan.parts.back().pivot_in_child = {0, 0, 0};
   auto world = build(RigidBodyWorld::kName, plan, Environment{}, PhysicsSettings{});
   EXPECT_EQ(world->birthStatus(), EvalStatus::self_penetration);
-  EXPECT_NE(world->birthMessage().find("parts 1 and 6"), std::string::npos) << world->birthMessage();
+  EXPECT_NE(world->birthMessage().find("parts 1 and 6"), std::string::npos)
+      << world->birthMessage();
 }
 
 // the same run twice: the same bits
