@@ -132,6 +132,13 @@ double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& d
   return direction > 0 ? speed : -speed;
 }
 
+// the island Bullet solves a joint's motor and limit rows in: that of the collider of the part
+// the joint moves (Bullet's own choice, the colliders of the link and of its parent, is none for
+// the middle link of a spherical joint, whose rows are then never solved); null: Bullet's choice
+int islandOf(const btCollisionObject* part_collider, int bullet_island) {
+  return part_collider ? part_collider->getIslandTag() : bullet_island;
+}
+
 // a saturated motor on one joint degree of freedom: a solver row towards the target speed,
 // bounded by the torque budget, none while the budget is zero (a row bounded to [0, 0] changes
 // no velocity, and setting it up costs a solve of the whole body). Filled on the body's side
@@ -140,9 +147,18 @@ double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& d
 class BudgetMotor : public btMultiBodyJointMotor {
  public:
   // (finalized here: the solver writes each row's impulse back into the motor's storage)
-  BudgetMotor(btMultiBody* body, int link, JointResponses& responses)
-      : btMultiBodyJointMotor(body, link, 0.0, 0.0), responses_(responses) {
+  BudgetMotor(btMultiBody* body, int link, JointResponses& responses,
+              const btCollisionObject* part_collider)
+      : btMultiBodyJointMotor(body, link, 0.0, 0.0),
+        responses_(responses),
+        part_collider_(part_collider) {
     btMultiBodyJointMotor::finalizeMultiDof();
+  }
+  int getIslandIdA() const override {
+    return islandOf(part_collider_, btMultiBodyJointMotor::getIslandIdA());
+  }
+  int getIslandIdB() const override {
+    return islandOf(part_collider_, btMultiBodyJointMotor::getIslandIdB());
   }
   // the target speed and torque budget for the next Bullet step
   void setCommand(double target_speed, double max_impulse) {
@@ -154,6 +170,7 @@ class BudgetMotor : public btMultiBodyJointMotor {
 
  private:
   JointResponses& responses_;
+  const btCollisionObject* part_collider_;  // islandOf
   double target_speed_ = 0;
 };
 
@@ -190,16 +207,26 @@ void BudgetMotor::createConstraintRows(btMultiBodyConstraintArray& rows,
 // (btMultiBodyJointLimitConstraint::createConstraintRows): the same bits as Bullet's limit
 class JointLimit : public btMultiBodyJointLimitConstraint {
  public:
-  JointLimit(btMultiBody* body, int link, double lower, double upper, JointResponses& responses)
-      : btMultiBodyJointLimitConstraint(body, link, lower, upper), responses_(responses) {
+  JointLimit(btMultiBody* body, int link, double lower, double upper, JointResponses& responses,
+             const btCollisionObject* part_collider)
+      : btMultiBodyJointLimitConstraint(body, link, lower, upper),
+        responses_(responses),
+        part_collider_(part_collider) {
     // (the storage of the bounds' positions and impulses)
     btMultiBodyJointLimitConstraint::finalizeMultiDof();
+  }
+  int getIslandIdA() const override {
+    return islandOf(part_collider_, btMultiBodyJointLimitConstraint::getIslandIdA());
+  }
+  int getIslandIdB() const override {
+    return islandOf(part_collider_, btMultiBodyJointLimitConstraint::getIslandIdB());
   }
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override;
 
  private:
   JointResponses& responses_;
+  const btCollisionObject* part_collider_;  // islandOf
 };
 
 void JointLimit::createConstraintRows(btMultiBodyConstraintArray& rows,
@@ -575,6 +602,11 @@ void FeatherstoneWorld::build(double birth_height) {
     b.colliders.push_back(std::move(collider));
   }
 
+  // the collider whose island a joint's rows are solved in (physics.solve_every_dof)
+  auto islandPart = [&](int part) -> const btCollisionObject* {
+    return physics_.solve_every_dof ? b.colliders[static_cast<std::size_t>(part)].get() : nullptr;
+  };
+
   // joint limits on every degree of freedom
   for (int i = 1; i < part_count; ++i) {
     for (int d = 0; d < 3; ++d) {
@@ -582,7 +614,8 @@ void FeatherstoneWorld::build(double birth_height) {
       if (link < 0)
         continue;
       double limit = plan_.parts[i].joint_limit[d];
-      b.limits.push_back(std::make_unique<JointLimit>(&body, link, -limit, limit, *b.responses));
+      b.limits.push_back(
+          std::make_unique<JointLimit>(&body, link, -limit, limit, *b.responses, islandPart(i)));
       b.world.addMultiBodyConstraint(b.limits.back().get());
     }
   }
@@ -595,7 +628,8 @@ void FeatherstoneWorld::build(double birth_height) {
         b.motors.push_back(nullptr);
         continue;
       }
-      b.motors.push_back(std::make_unique<BudgetMotor>(&body, link, *b.responses));
+      b.motors.push_back(
+          std::make_unique<BudgetMotor>(&body, link, *b.responses, islandPart(effector.part)));
       b.world.addMultiBodyConstraint(b.motors.back().get());
     }
   }

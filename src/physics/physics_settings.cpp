@@ -61,6 +61,11 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "without ground or objects (water): after each Bullet step the body's momentum and angular "
         "momentum are what gravity and the fluid gave it (Bullet's integrator lets a wriggling "
         "body drift and spin by itself); false: Bullet's as they come");
+  s.add("physics.solve_every_dof", p.solve_every_dof,
+        "the Featherstone world solves the motor and limits of every joint degree of freedom; "
+        "false: the middle one of a spherical joint has neither (a fault of earlier runs: it "
+        "turns freely)")
+      .earlierRunsUsed("false");
   s.add("physics.contact_slop", p.contact_slop,
         "overlap a contact keeps uncorrected, m (only deeper overlap is pushed apart)")
       .require([&p] { return p.contact_slop >= 0 && p.contact_slop <= 0.1; },

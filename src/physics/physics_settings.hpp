@@ -64,6 +64,13 @@ struct PhysicsSettings {
   /// fluid gave it, and its centre of mass to where that momentum carried it
   /// (docs/physics-and-tasks.md, "No swimming in a vacuum"). On the ground the contacts hold it.
   bool momentum_correction = true;
+  /// The Featherstone world solves the motor and the limits of every degree of freedom. Off (what
+  /// runs stored before this key used): the middle degree of freedom of a spherical joint has
+  /// neither — it turns freely whatever its command — because Bullet solves a multibody
+  /// constraint only in the island of a link that carries a collider, and that one's link and
+  /// parent are both collider-less virtual links (docs/physics-and-tasks.md, "Every degree of
+  /// freedom solved").
+  bool solve_every_dof = true;
   /// Share of a contact's overlap (beyond contact_slop) removed per Bullet step (Bullet's erp2).
   double contact_erp = 0.2;
   int solver_iterations = 20;  ///< the most constraint solver iterations per Bullet step

@@ -147,12 +147,9 @@ TEST(RigidBodyWorld, JointCoordinatesAreTheFeatherstoneChain) {
   }
 }
 
-// full commands one way, then the other: motors take every degree of freedom of the hinge, the
-// universal joint and the slider to its limit in both worlds, and every one of the spherical
-// joint's in the rigid-body world (Featherstone's chain of light virtual links lets the spherical
-// joint's middle coordinate run through its limit under full motors without gravity: a fault of
-// that world, docs/physics-and-tasks.md); explicit torques turn each the same way, past half
-// its limit
+// full commands one way, then the other: motors take every degree of freedom to its limit in both
+// worlds (the spherical joint's middle one too: physics.solve_every_dof); explicit torques turn
+// each the same way, past half its limit
 TEST(RigidBodyWorld, MotorsAndTorquesDriveEveryJointToItsLimits) {
   const BodyPlan plan = limb();
   const Environment environment = weightless();
@@ -160,19 +157,13 @@ TEST(RigidBodyWorld, MotorsAndTorquesDriveEveryJointToItsLimits) {
     PhysicsSettings physics;
     physics.actuation = actuation;
     for (const char* kind : kWorlds) {
-      const bool rigid = kind == std::string(RigidBodyWorld::kName);
       auto world = build(kind, plan, environment, physics);
       for (double sign : {1.0, -1.0}) {
-        std::vector<double> commands(plan.effectors.size(), sign);
-        for (std::size_t e = 0; e < commands.size(); ++e)
-          if (!rigid && plan.parts[plan.effectors[e].part].joint == JointType::spherical)
-            commands[e] = 0;  // (passive there)
+        const std::vector<double> commands(plan.effectors.size(), sign);
         for (int s = 0; s < 480; ++s)
           world->step(commands);
         for (const EffectorPlan& effector : plan.effectors) {
           const PartPlan& part = plan.parts[effector.part];
-          if (part.joint == JointType::spherical && !rigid)
-            continue;
           const double limit = part.joint_limit[effector.dof];
           const double at = world->jointPosition(effector.part, effector.dof);
           const std::string what =
@@ -182,7 +173,9 @@ TEST(RigidBodyWorld, MotorsAndTorquesDriveEveryJointToItsLimits) {
             EXPECT_NEAR(at, sign * limit, 0.06 * limit) << what;
           else
             EXPECT_GT(sign * at, 0.5 * limit) << what;
-          EXPECT_LT(std::abs(at), 1.06 * limit) << what;
+          // (a constant explicit torque settles past the limit where the limit's position
+          // correction balances it: 13 % for the Featherstone spherical joint's twist)
+          EXPECT_LT(std::abs(at), (actuation == Actuation::torque ? 1.15 : 1.06) * limit) << what;
         }
       }
     }

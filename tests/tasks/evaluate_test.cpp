@@ -338,13 +338,14 @@ std::vector<std::pair<std::string, std::string>> evolvedOn(
   return more;
 }
 // ... and under the physics of their day: before friction anchors, contact slop, implicit joint
-// damping, the energy watch and the solver tolerance
+// damping, the energy watch, the solved middle axis of spherical joints and the solver tolerance
 std::vector<std::pair<std::string, std::string>> earlierPhysics(
     std::vector<std::pair<std::string, std::string>> more = {}) {
   more.insert(more.end(), {{"physics.friction_anchors", "false"},
                            {"physics.contact_slop", "0"},
                            {"physics.implicit_damping", "false"},
                            {"physics.max_energy_gain", "0"},
+                           {"physics.solve_every_dof", "false"},
                            {"physics.solver_tolerance", "0"}});
   return evolvedOn(more);
 }
