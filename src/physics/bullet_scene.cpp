@@ -56,6 +56,7 @@ btDefaultCollisionConstructionInfo creaturePools() {
 void setSolverInfo(btContactSolverInfo& solver, const PhysicsSettings& physics) {
   solver.m_numIterations = physics.solver_iterations;
   solver.m_leastSquaresResidualThreshold = physics.solver_tolerance * physics.solver_tolerance;
+  solver.m_erp = physics.joint_erp;
   solver.m_erp2 = physics.contact_erp;
   solver.m_linearSlop = physics.contact_slop;
 }

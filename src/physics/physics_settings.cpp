@@ -71,6 +71,10 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
       .require([&p] { return p.contact_slop >= 0 && p.contact_slop <= 0.1; },
                "must be in [0, 0.1] m")
       .earlierRunsUsed("0");
+  s.add("physics.joint_erp", p.joint_erp,
+        "share of a joint's position error (a passed limit; in the rigid-body world also a joint "
+        "coming apart) removed per Bullet step (Bullet's erp)")
+      .require([&p] { return p.joint_erp > 0 && p.joint_erp <= 1; }, "must be in (0, 1]");
   s.add("physics.contact_erp", p.contact_erp,
         "share of a contact's overlap beyond the slop removed per Bullet step (Bullet's erp2)")
       .require([&p] { return p.contact_erp >= 0 && p.contact_erp <= 1; }, "must be in [0, 1]");

@@ -71,6 +71,11 @@ struct PhysicsSettings {
   /// parent are both collider-less virtual links (docs/physics-and-tasks.md, "Every degree of
   /// freedom solved").
   bool solve_every_dof = true;
+  /// Share of a joint's position error (a limit passed; in the rigid-body world also the parts
+  /// drifting apart at a joint) removed per Bullet step (Bullet's erp). The correction adds
+  /// velocity, so it can add energy: in the rigid-body world, strong joints on light parts gain
+  /// energy through it (docs/performance.md, "The two worlds").
+  double joint_erp = 0.2;
   /// Share of a contact's overlap (beyond contact_slop) removed per Bullet step (Bullet's erp2).
   double contact_erp = 0.2;
   int solver_iterations = 20;  ///< the most constraint solver iterations per Bullet step

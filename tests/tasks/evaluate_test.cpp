@@ -372,6 +372,25 @@ TEST(Evaluate, SaturatedMotorsDenyTheIntegratorExploit) {
   EXPECT_GT(with_torque.measure("distance"), 20.0);
 }
 
+// a two-part walker bred in the Featherstone world (a 5.9 kg plate on a strong spherical joint):
+// in the rigid-body world its joint comes apart under the motor and Bullet's position correction
+// pushes it back with energy the energy watch ends as exploded; a softer correction
+// (physics.joint_erp 0.02) lets it walk there too
+TEST(Evaluate, JointCorrectionEnergyIsCaughtInTheRigidBodyWorld) {
+  Genome pump = graph::graphGenome(readGenomeFile(
+      std::string(CAMBRIAN_SOURCE_DIR) + "/tests/tasks/data/joint_correction_pump.genome"));
+  Outcome featherstone = evaluateGraph(pump, settingsWith({}));
+  ASSERT_EQ(featherstone.status, EvalStatus::ok) << featherstone.message;
+  EXPECT_GT(featherstone.measure("distance"), 2.0);
+  Outcome rigid = evaluateGraph(pump, settingsWith({{"physics.world", "rigid_bodies"}}));
+  EXPECT_EQ(rigid.status, EvalStatus::exploded);
+  EXPECT_NE(rigid.message.find("physics.max_energy_gain"), std::string::npos) << rigid.message;
+  Outcome softer = evaluateGraph(
+      pump, settingsWith({{"physics.world", "rigid_bodies"}, {"physics.joint_erp", "0.02"}}));
+  ASSERT_EQ(softer.status, EvalStatus::ok) << softer.message;
+  EXPECT_GT(softer.measure("distance"), 0.5);
+}
+
 // a three-part creature evolved with self-collision on under the earlier physics: its motor
 // presses one part into another and Bullet's contact correction launched it (about 10 m/s, in
 // the air); with friction anchors and contact slop (the defaults) it stays near where it was,
