@@ -97,7 +97,19 @@ po::variables_map parseOptions(int argc, const char* const* argv,
     parser.options(all);
     if (positional)
       parser.positional(*positional);
-    po::store(parser.run(), vm);
+    po::parsed_options parsed = parser.run();
+    // a word that is no option, where the command takes none: Boost would drop it silently
+    // (`cambrian evolve walk.ini` would run the defaults)
+    if (!positional) {
+      for (const po::option& option : parsed.options) {
+        if (option.position_key >= 0 && !option.original_tokens.empty())
+          throw Error(ExitCode::usage,
+                      "command line: '" + option.original_tokens.front() +
+                          "' is not an option (settings are --section.key VALUE; an experiment "
+                          "file is --config FILE)");
+      }
+    }
+    po::store(parsed, vm);
     po::notify(vm);
   } catch (const po::error& e) {
     // Boost fills the placeholders of its message (%original_token% and the like) until none is

@@ -95,6 +95,24 @@ TEST(ParseOptions, ATokenHoldingAParserPlaceholderIsRefusedNotLoopedOn) {
   }
 }
 
+// a bare word where the command takes none is refused, naming it and the way to give a file
+// (Boost would drop it: `cambrian evolve walk.ini` ran the defaults)
+TEST(ParseOptions, ABareWordIsRefusedWhereNoneIsTaken) {
+  po::options_description cli;
+  cli.add_options()("config", po::value<std::string>());
+  Creature c;
+  const char* argv[] = {"x", "walk.ini", "--physics.gravity", "3"};
+  try {
+    parseOptions(4, argv, cli, c.schema, nullptr, "config");
+    ADD_FAILURE() << "walk.ini was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::usage);
+    EXPECT_NE(std::string(e.what()).find("'walk.ini' is not an option"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("--config FILE"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ParseOptions, CommandLineWinsOverTheFileAndErrorsNameTheirSource) {
   std::string path = testing::TempDir() + "/cambrian_options_test.ini";
   std::ofstream(path) << "[physics]\ntime_step = 0.01\ngravity = 3\n[task]\nname = jump\n";
