@@ -79,6 +79,55 @@ double highestGroundUnder(const Environment& environment, const std::vector<Part
   return environment.ground.highestIn(x_low, x_high, y_low, y_high);
 }
 
+Vec3 birthPosition(const BodyPlan& plan, const Environment& environment, double birth_height) {
+  double lowest = 0;
+  for (std::size_t i = 0; i < plan.parts.size(); ++i) {
+    const double z = lowestZ(plan.parts[i], plan.parts[i].pose);
+    if (i == 0 || z < lowest)
+      lowest = z;
+  }
+  Vec3 position = plan.parts[0].pose.position + Vec3{0, 0, birth_height - lowest};
+  if (environment.ground.kind == Ground::Kind::heightfield)
+    position.z += highestGroundUnder(environment, plan.parts);
+  return position;
+}
+
+std::vector<DragCoefficients> fluidDrag(const BodyPlan& plan, const Environment& environment) {
+  std::vector<DragCoefficients> drag;
+  const double viscosity = environment.fluid.viscosity;
+  if (!(viscosity > 0))
+    return drag;
+  for (const PartPlan& part : plan.parts)
+    drag.push_back(viscousDrag(part.shape, part.size, viscosity));
+  for (const FreeObject& object : environment.objects)
+    drag.push_back(viscousDrag(object.shape, object.size, viscosity));
+  for (const HeldObject& held : plan.held)
+    drag.push_back(viscousDrag(held.shape, held.size, viscosity));
+  return drag;
+}
+
+std::string heldObjectProblem(const BodyPlan& plan, std::size_t h) {
+  const HeldObject& held = plan.held[h];
+  if (held.part >= 0 && held.part < static_cast<int>(plan.parts.size()) && held.mass > 0)
+    return {};
+  return "held object " + std::to_string(h) + " names part " + std::to_string(held.part) +
+         " or has no mass";
+}
+
+Transform poseOf(const btCollisionObject& body) {
+  const btTransform& transform = body.getWorldTransform();
+  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+}
+
+Vec3 directionIn(const btCollisionObject& body, Vec3 point) {
+  const btTransform& frame = body.getWorldTransform();
+  btVector3 to_point = frame.getBasis().transpose() * (toBt(point) - frame.getOrigin());
+  const double distance = to_point.length();
+  if (distance > 1e-9)
+    to_point /= distance;
+  return fromBt(to_point);
+}
+
 void anchorFriction(btCollisionObject& object, const PhysicsSettings& physics) {
   if (physics.friction_anchors)
     object.setCollisionFlags(object.getCollisionFlags() |

@@ -56,6 +56,32 @@ double highestGroundUnder(const Environment& environment, const std::vector<Part
 /// Sets Bullet's friction anchors on `object` when physics.friction_anchors.
 void anchorFriction(btCollisionObject& object, const PhysicsSettings& physics);
 
+/// Where the root part is born: at its plan position, raised so the body's lowest point is
+/// `birth_height` m above z = 0 (on hills, above the highest ground under the body).
+Vec3 birthPosition(const BodyPlan& plan, const Environment& environment, double birth_height);
+/// The fluid's drag on every part, then every environment object, then every held object (Sims'
+/// water); empty without a fluid.
+std::vector<DragCoefficients> fluidDrag(const BodyPlan& plan, const Environment& environment);
+/// What is wrong with held object `h` of `plan` (a part it cannot name, no mass); empty if nothing.
+std::string heldObjectProblem(const BodyPlan& plan, std::size_t h);
+/// The world pose of a body.
+Transform poseOf(const btCollisionObject& body);
+/// The unit direction from a body towards the world point `point`, in the body's frame.
+Vec3 directionIn(const btCollisionObject& body, Vec3 point);
+/// Height of the lowest point of parts `plans` whose bodies are `bodies` (same order), m.
+template <class Bodies>
+double lowestPointOf(const std::vector<PartPlan>& plans, const Bodies& bodies) {
+  double lowest = 0;
+  for (std::size_t i = 0; i < plans.size(); ++i) {
+    // the centre minus how far the part reaches down
+    const btTransform& transform = bodies[i]->getWorldTransform();
+    const double z = transform.getOrigin().z() - reachDown(plans[i], transform.getBasis());
+    if (i == 0 || z < lowest)
+      lowest = z;
+  }
+  return lowest;
+}
+
 /// The environment's ground in a Bullet world: the terrain of a heightfield with a plane under
 /// its lowest point, or the plane alone, or nothing. Removes itself from the world it was added
 /// to when destroyed.

@@ -500,18 +500,9 @@ void FeatherstoneWorld::build(double birth_height) {
   for (int i = 1; i < part_count; ++i)
     link_count += std::max(1, degreesOfFreedom(plan_.parts[i].joint));
 
-  // place the creature: lowest point at z = birth_height
-  double lowest = 0;
-  for (int i = 0; i < part_count; ++i) {
-    double z = lowestZ(plan_.parts[i], plan_.parts[i].pose);
-    if (i == 0 || z < lowest)
-      lowest = z;
-  }
+  // place the creature: lowest point at z = birth_height (on hills above the ground under it)
   const PartPlan& root = plan_.parts[0];
-  Vec3 base_position = root.pose.position + Vec3{0, 0, birth_height - lowest};
-  // on hills: above the highest ground under the body
-  if (environment_.ground.kind == Ground::Kind::heightfield)
-    base_position.z += highestGroundUnder(environment_, plan_.parts);
+  const Vec3 base_position = birthPosition(plan_, environment_, birth_height);
 
   // the multibody: root part is the floating base
   b.body = std::make_unique<btMultiBody>(link_count, root.mass,
@@ -660,15 +651,7 @@ void FeatherstoneWorld::build(double birth_height) {
   if (correct_momentum_)
     correctMomentum(0);  // the centre and the momentum at birth
 
-  // the fluid's drag on every part and object (Sims' water)
-  if (environment_.fluid.viscosity > 0) {
-    for (const PartPlan& part : plan_.parts)
-      drag_.push_back(viscousDrag(part.shape, part.size, environment_.fluid.viscosity));
-    for (const FreeObject& object : environment_.objects)
-      drag_.push_back(viscousDrag(object.shape, object.size, environment_.fluid.viscosity));
-    for (const HeldObject& held : plan_.held)
-      drag_.push_back(viscousDrag(held.shape, held.size, environment_.fluid.viscosity));
-  }
+  drag_ = fluidDrag(plan_, environment_);  // Sims' water
 }
 
 void FeatherstoneWorld::addHeldObjects() {
@@ -679,9 +662,8 @@ void FeatherstoneWorld::addHeldObjects() {
   released_.assign(plan_.held.size(), false);
   for (std::size_t h = 0; h < plan_.held.size(); ++h) {
     const HeldObject& held = plan_.held[h];
-    if (held.part < 0 || held.part >= static_cast<int>(plan_.parts.size()) || !(held.mass > 0)) {
-      refuse(EvalStatus::invalid_body, "held object " + std::to_string(h) + " names part " +
-                                           std::to_string(held.part) + " or has no mass");
+    if (std::string problem = heldObjectProblem(plan_, h); !problem.empty()) {
+      refuse(EvalStatus::invalid_body, std::move(problem));
       return;
     }
     PartCollider& holder = *b.colliders[static_cast<std::size_t>(held.part)];
@@ -781,12 +763,7 @@ Vec3 FeatherstoneWorld::partInertia(int part) const {
 }
 
 Vec3 FeatherstoneWorld::directionInPart(int part, Vec3 point) const {
-  const btTransform& frame = bullet_->colliders[part]->getWorldTransform();
-  btVector3 to_point = frame.getBasis().transpose() * (toBt(point) - frame.getOrigin());
-  double distance = to_point.length();
-  if (distance > 1e-9)
-    to_point /= distance;
-  return fromBt(to_point);
+  return directionIn(*bullet_->colliders[part], point);
 }
 
 void FeatherstoneWorld::applyTorques(std::span<const double> commands, double substep) {
@@ -1007,26 +984,15 @@ Vec3 FeatherstoneWorld::partPosition(int part) const {
 }
 
 Transform FeatherstoneWorld::partPose(int part) const {
-  const btTransform& transform = bullet_->colliders[part]->getWorldTransform();
-  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+  return poseOf(*bullet_->colliders[part]);
 }
 
 double FeatherstoneWorld::lowestPoint() const {
-  double lowest = 0;
-  for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
-    // the centre minus how far the part reaches down
-    const btTransform& transform = bullet_->colliders[i]->getWorldTransform();
-    double z = transform.getOrigin().z() - reachDown(plan_.parts[i], transform.getBasis());
-    if (i == 0 || z < lowest)
-      lowest = z;
-  }
-  return lowest;
+  return lowestPointOf(plan_.parts, bullet_->colliders);
 }
 
 Transform FeatherstoneWorld::objectPose(int object) const {
-  const btTransform& transform =
-      bullet_->objects.bodies.at(static_cast<std::size_t>(object))->getWorldTransform();
-  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+  return poseOf(*bullet_->objects.bodies.at(static_cast<std::size_t>(object)));
 }
 
 }  // namespace cambrian

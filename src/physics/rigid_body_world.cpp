@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace cambrian {
 
@@ -155,15 +154,7 @@ void RigidBodyWorld::build(double birth_height) {
 
   // place the creature as the Featherstone world does: lowest point at z = birth_height (on
   // hills above the highest ground under it), each child where its joint puts it
-  double lowest = 0;
-  for (int i = 0; i < part_count; ++i) {
-    const double z = lowestZ(plan_.parts[i], plan_.parts[i].pose);
-    if (i == 0 || z < lowest)
-      lowest = z;
-  }
-  Vec3 base_position = plan_.parts[0].pose.position + Vec3{0, 0, birth_height - lowest};
-  if (environment_.ground.kind == Ground::Kind::heightfield)
-    base_position.z += highestGroundUnder(environment_, plan_.parts);
+  const Vec3 base_position = birthPosition(plan_, environment_, birth_height);
   std::vector<btTransform> start(part_count);
   start[0] = btTransform(toBt(plan_.parts[0].pose.rotation), toBt(base_position));
   for (int i = 1; i < part_count; ++i) {
@@ -200,15 +191,7 @@ void RigidBodyWorld::build(double birth_height) {
   b.objects.addObjects(b.world, environment_, physics_);
   addHeldObjects();
 
-  // the fluid's drag on every part and object (Sims' water)
-  if (environment_.fluid.viscosity > 0) {
-    for (const PartPlan& part : plan_.parts)
-      drag_.push_back(viscousDrag(part.shape, part.size, environment_.fluid.viscosity));
-    for (const FreeObject& object : environment_.objects)
-      drag_.push_back(viscousDrag(object.shape, object.size, environment_.fluid.viscosity));
-    for (const HeldObject& held : plan_.held)
-      drag_.push_back(viscousDrag(held.shape, held.size, environment_.fluid.viscosity));
-  }
+  drag_ = fluidDrag(plan_, environment_);  // Sims' water
 }
 
 void RigidBodyWorld::addJoints() {
@@ -283,9 +266,8 @@ void RigidBodyWorld::addHeldObjects() {
   released_.assign(plan_.held.size(), false);
   for (std::size_t h = 0; h < plan_.held.size(); ++h) {
     const HeldObject& held = plan_.held[h];
-    if (held.part < 0 || held.part >= static_cast<int>(plan_.parts.size()) || !(held.mass > 0)) {
-      refuse(EvalStatus::invalid_body, "held object " + std::to_string(h) + " names part " +
-                                           std::to_string(held.part) + " or has no mass");
+    if (std::string problem = heldObjectProblem(plan_, h); !problem.empty()) {
+      refuse(EvalStatus::invalid_body, std::move(problem));
       return;
     }
     btRigidBody& holder = *b.parts[static_cast<std::size_t>(held.part)];
@@ -333,11 +315,6 @@ void RigidBodyWorld::applyTorques(std::span<const double> commands) {
       parent.applyTorque(-amount * axis);
     }
   };
-  if (explicit_damping || torques) {
-    for (auto& joint : b.joints)
-      if (joint)
-        joint->calculateTransforms();
-  }
   if (explicit_damping) {
     for (std::size_t i = 1; i < plan_.parts.size(); ++i)
       for (int d = 0; d < degreesOfFreedom(plan_.parts[i].joint); ++d)
@@ -380,11 +357,13 @@ void RigidBodyWorld::step(std::span<const double> commands) {
         applyFluidDrag(*b.objects.bodies[k2], drag_[b.parts.size() + k2], substep);
     }
     b.world.stepSimulation(substep, 0);
+    // the joints' frames, angles and axes where the step left the parts (Bullet's are from
+    // before it): what the readings, the next substep's torques and the work bound use
+    for (auto& joint : b.joints)
+      if (joint)
+        joint->calculateTransforms();
     // no effector pushes harder than its limit x |command|, at the speed the step ended with
     if (!commands.empty()) {
-      for (auto& joint : b.joints)
-        if (joint)
-          joint->calculateTransforms();
       for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
         const EffectorPlan& effector = plan_.effectors[e];
         if (effector.kind == EffectorKind::joint && effector.part > 0 &&
@@ -394,9 +373,6 @@ void RigidBodyWorld::step(std::span<const double> commands) {
       }
     }
   }
-  for (auto& joint : b.joints)
-    if (joint)
-      joint->calculateTransforms();
 }
 
 double RigidBodyWorld::jointSpeed(int part, int dof) const {
@@ -474,12 +450,7 @@ const std::vector<std::uint8_t>& RigidBodyWorld::groundContacts() {
 }
 
 Vec3 RigidBodyWorld::directionInPart(int part, Vec3 point) const {
-  const btTransform& frame = bullet_->parts[static_cast<std::size_t>(part)]->getWorldTransform();
-  btVector3 to_point = frame.getBasis().transpose() * (toBt(point) - frame.getOrigin());
-  const double distance = to_point.length();
-  if (distance > 1e-9)
-    to_point /= distance;
-  return fromBt(to_point);
+  return directionIn(*bullet_->parts[static_cast<std::size_t>(part)], point);
 }
 
 Vec3 RigidBodyWorld::partPosition(int part) const {
@@ -487,26 +458,15 @@ Vec3 RigidBodyWorld::partPosition(int part) const {
 }
 
 Transform RigidBodyWorld::partPose(int part) const {
-  const btTransform& transform =
-      bullet_->parts[static_cast<std::size_t>(part)]->getWorldTransform();
-  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+  return poseOf(*bullet_->parts[static_cast<std::size_t>(part)]);
 }
 
 double RigidBodyWorld::lowestPoint() const {
-  double lowest = 0;
-  for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
-    const btTransform& transform = bullet_->parts[i]->getWorldTransform();
-    const double z = transform.getOrigin().z() - reachDown(plan_.parts[i], transform.getBasis());
-    if (i == 0 || z < lowest)
-      lowest = z;
-  }
-  return lowest;
+  return lowestPointOf(plan_.parts, bullet_->parts);
 }
 
 Transform RigidBodyWorld::objectPose(int object) const {
-  const btTransform& transform =
-      bullet_->objects.bodies.at(static_cast<std::size_t>(object))->getWorldTransform();
-  return {fromBt(transform.getOrigin()), fromBt(transform.getRotation())};
+  return poseOf(*bullet_->objects.bodies.at(static_cast<std::size_t>(object)));
 }
 
 Transform RigidBodyWorld::heldPose(int held) const {
