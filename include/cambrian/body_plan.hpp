@@ -146,6 +146,19 @@ double shapeSurface(PartShape shape, Vec3 size);
 /// How far a part of `shape` and `size` turned by `rotation` reaches from its centre along the
 /// unit world direction `direction`, m (a box: its farthest corner).
 double shapeReach(PartShape shape, Vec3 size, Quat rotation, Vec3 direction);
+/// A point on a part's surface and the outward unit normal there, in the part's frame.
+struct SurfacePoint {
+  Vec3 point;
+  Vec3 normal;
+};
+/// Where a part of `shape` and `size` is met in `direction` from its centre. A box: the face of
+/// the direction's largest component (ties to the lower axis), at the point its other two give in
+/// units of the half-size (Sims' attachment); the other shapes: where the ray from the centre
+/// leaves them (Minemonics' joint anchor). A zero direction is +x.
+SurfacePoint surfacePoint(PartShape shape, Vec3 size, Vec3 direction);
+/// Area of the section of a part of `shape` and `size` across its axis `axis` through its centre,
+/// m^2 (a box: the face perpendicular to the axis).
+double sectionArea(PartShape shape, Vec3 size, int axis);
 /// The lowest world z of a part at `pose`.
 double lowestZ(const PartPlan& part, const Transform& pose);
 

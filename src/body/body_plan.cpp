@@ -128,6 +128,60 @@ double shapeReach(PartShape shape, Vec3 size, Quat rotation, Vec3 direction) {
   return 0;
 }
 
+SurfacePoint surfacePoint(PartShape shape, Vec3 size, Vec3 direction) {
+  if (shape == PartShape::box) {
+    int k = 0;
+    for (int i = 1; i < 3; ++i) {
+      if (std::fabs(direction[i]) > std::fabs(direction[k]))
+        k = i;
+    }
+    const double sign = direction[k] < 0 ? -1.0 : 1.0;
+    Vec3 on_face = direction;
+    on_face[k] = sign;
+    Vec3 normal;
+    normal[k] = sign;
+    return {hadamard(on_face, size * 0.5), normal};
+  }
+  const double length = std::sqrt(dot(direction, direction));
+  const Vec3 d = length > 0 ? direction * (1 / length) : Vec3{1, 0, 0};
+  const double across = std::sqrt(d.y * d.y + d.z * d.z);  // the share away from the x axis
+  const Vec3 radial = across > 0 ? Vec3{0, d.y / across, d.z / across} : Vec3{0, 0, 0};
+  if (shape == PartShape::sphere)
+    return {d * (0.5 * size.x), d};
+  const double r = radiusOf(size);
+  if (shape == PartShape::cylinder) {
+    const double to_side = across > 0 ? r / across : HUGE_VAL;
+    const double to_cap = d.x != 0 ? 0.5 * size.x / std::fabs(d.x) : HUGE_VAL;
+    if (to_side <= to_cap)
+      return {d * to_side, radial};
+    return {d * to_cap, Vec3{d.x < 0 ? -1.0 : 1.0, 0, 0}};
+  }
+  // a capsule: the straight middle, else the cap the ray leaves through
+  const double half_middle = std::max(0.0, 0.5 * size.x - r);
+  if (across > 0 && std::fabs(d.x) * (r / across) <= half_middle)
+    return {d * (r / across), radial};
+  const Vec3 centre{d.x < 0 ? -half_middle : half_middle, 0, 0};
+  const double b = dot(d, centre);
+  const double t = b + std::sqrt(std::max(0.0, b * b - dot(centre, centre) + r * r));
+  const Vec3 point = d * t;
+  return {point, (point - centre) * (1 / r)};
+}
+
+double sectionArea(PartShape shape, Vec3 size, int axis) {
+  const double r = radiusOf(size);
+  switch (shape) {
+    case PartShape::box:
+      return size[(axis + 1) % 3] * size[(axis + 2) % 3];
+    case PartShape::sphere:
+      return kPi * 0.25 * size.x * size.x;
+    case PartShape::capsule:
+      return axis == 0 ? kPi * r * r : std::max(0.0, size.x - 2 * r) * 2 * r + kPi * r * r;
+    case PartShape::cylinder:
+      return axis == 0 ? kPi * r * r : size.x * 2 * r;
+  }
+  return 0;
+}
+
 double lowestZ(const PartPlan& part, const Transform& pose) {
   // a box: its lowest corner, exactly as placed
   if (part.shape == PartShape::box) {

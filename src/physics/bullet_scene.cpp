@@ -24,6 +24,17 @@ std::unique_ptr<btCollisionShape> shapeOf(PartShape shape, Vec3 size) {
 
 btVector3 inertiaOf(PartShape shape, Vec3 size, double mass) {
   btVector3 inertia;
+  if (shape == PartShape::capsule) {
+    // a solid capsule along x, exactly: Bullet gives its bounding box's inertia
+    const double r = 0.5 * size.y, h = std::max(0.0, size.x - 2 * r);
+    const double middle = h, ends = 4.0 / 3.0 * r;  // volumes over pi r^2
+    const double m_middle = mass * middle / (middle + ends), m_ends = mass - m_middle;
+    const double along = m_middle * r * r / 2 + m_ends * 2 * r * r / 5;
+    const double across = m_middle * (h * h / 12 + r * r / 4) +
+                          m_ends * (2 * r * r / 5 + h * h / 4 + 3 * h * r / 8);
+    inertia.setValue(along, across, across);
+    return inertia;
+  }
   shapeOf(shape, size)->calculateLocalInertia(mass, inertia);
   return inertia;
 }

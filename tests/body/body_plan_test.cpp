@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -103,6 +104,54 @@ TEST(Shape, LowestPointAndBodyLength) {
   plan.parts = {box, ball};
   // from the box's left end (-0.5) to the sphere's right side (2.2)
   EXPECT_DOUBLE_EQ(bodyLength(plan), 2.7);
+}
+
+}  // namespace
+}  // namespace cambrian
+
+namespace cambrian {
+namespace {
+
+// distance from p to the segment of a capsule's straight middle, [-h, h] on x
+double fromMiddle(Vec3 p, double h) {
+  const double x = std::clamp(p.x, -h, h);
+  return std::sqrt((p.x - x) * (p.x - x) + p.y * p.y + p.z * p.z);
+}
+
+TEST(BodyPlan, SurfacePointsLieOnTheSurfaceWithUnitOutwardNormals) {
+  // a box: Sims' rule, the face of the largest component at the point the others give
+  const SurfacePoint face = surfacePoint(PartShape::box, {0.6, 0.4, 0.2}, {0.5, -1, 0.25});
+  EXPECT_EQ(face.point, (Vec3{0.15, -0.2, 0.025}));
+  EXPECT_EQ(face.normal, (Vec3{0, -1, 0}));
+  EXPECT_EQ(surfacePoint(PartShape::box, {0.6, 0.4, 0.2}, {0, 0, 0}).point, (Vec3{0.3, 0, 0}));
+
+  // a capsule 0.8 long, 0.2 thick: the ray from its centre leaves it where distance = radius
+  const Vec3 size{0.8, 0.2, 0.2};
+  for (const Vec3 d : {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0.3, 0.2, -0.4},
+                       Vec3{1, 0.05, 0}, Vec3{-0.9, 0.1, 0.2}, Vec3{0, 0, 0}}) {
+    const SurfacePoint s = surfacePoint(PartShape::capsule, size, d);
+    EXPECT_NEAR(fromMiddle(s.point, 0.3), 0.1, 1e-12) << d.x << " " << d.y << " " << d.z;
+    EXPECT_NEAR(norm(s.normal), 1, 1e-12);
+    // the normal points away from the nearest point of the middle
+    const Vec3 nearest{std::clamp(s.point.x, -0.3, 0.3), 0, 0};
+    EXPECT_LT(norm(s.point - nearest - s.normal * 0.1), 1e-12);
+    // and along the direction asked
+    if (norm(d) > 0)
+      EXPECT_LT(norm(s.point * (1 / norm(s.point)) - d * (1 / norm(d))), 1e-12);
+  }
+  EXPECT_LT(norm(surfacePoint(PartShape::capsule, size, {-1, 0, 0}).point - Vec3{-0.4, 0, 0}),
+            1e-15);
+  EXPECT_NEAR(surfacePoint(PartShape::sphere, {0.5, 0.5, 0.5}, {0, 3, 4}).point.z, 0.2, 1e-15);
+  const SurfacePoint cap = surfacePoint(PartShape::cylinder, {0.4, 0.2, 0.2}, {1, 0.1, 0});
+  EXPECT_NEAR(cap.point.x, 0.2, 1e-15);
+  EXPECT_EQ(cap.normal, (Vec3{1, 0, 0}));
+}
+
+TEST(BodyPlan, SectionAreas) {
+  EXPECT_DOUBLE_EQ(sectionArea(PartShape::box, {0.6, 0.4, 0.2}, 0), 0.4 * 0.2);
+  EXPECT_DOUBLE_EQ(sectionArea(PartShape::box, {0.6, 0.4, 0.2}, 2), 0.6 * 0.4);
+  EXPECT_DOUBLE_EQ(sectionArea(PartShape::capsule, {0.8, 0.2, 0.2}, 0), kPi * 0.01);
+  EXPECT_DOUBLE_EQ(sectionArea(PartShape::capsule, {0.8, 0.2, 0.2}, 1), 0.6 * 0.2 + kPi * 0.01);
 }
 
 }  // namespace

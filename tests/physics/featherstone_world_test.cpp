@@ -61,6 +61,31 @@ TEST(FeatherstoneWorld, EveryShapeRestsOnTheGround) {
   }
 }
 
+// a capsule's inertia is a solid capsule's in both worlds (Bullet's own is its bounding box's):
+// with no straight middle, a sphere's; the exact sums of a cylinder and two half spheres
+TEST(FeatherstoneWorld, ACapsuleHasASolidCapsulesInertia) {
+  for (const char* kind : {"featherstone", "rigid_bodies"}) {
+    for (const Vec3 size : {Vec3{0.2, 0.2, 0.2}, Vec3{0.8, 0.2, 0.2}}) {
+      BodyPlan plan;
+      plan.parts.push_back(partOf(PartShape::capsule, size));
+      PhysicsSettings physics;
+      physics.world = kind;
+      auto world = makeWorld(plan, Environment{}, physics, 0.3);
+      const double r = 0.1, h = size.x - 0.2, density = 1000;
+      const double m_middle = density * kPi * r * r * h;
+      const double m_ends = density * 4.0 / 3.0 * kPi * r * r * r;
+      const double along = m_middle * r * r / 2 + m_ends * 0.4 * r * r;
+      // each half sphere: 83/320 m r^2 about its centre of mass, 3r/8 from its flat face
+      const double across = m_middle * (h * h / 12 + r * r / 4) +
+                            m_ends * (83.0 / 320.0 * r * r + std::pow(h / 2 + 3 * r / 8, 2));
+      const Vec3 inertia = world->partInertia(0);
+      EXPECT_NEAR(inertia.x, along, 1e-12 * along) << kind << " " << size.x;
+      EXPECT_NEAR(inertia.y, across, 1e-12 * across) << kind << " " << size.x;
+      EXPECT_NEAR(inertia.z, across, 1e-12 * across) << kind << " " << size.x;
+    }
+  }
+}
+
 // a prismatic joint slides its part along its axis, within its limit
 TEST(FeatherstoneWorld, PrismaticJointSlides) {
   BodyPlan plan;

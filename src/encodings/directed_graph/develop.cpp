@@ -51,16 +51,45 @@ Quat faceRotation(int k, double s) {
   return s > 0 ? Quat{h, 0, -h, 0} : Quat{h, 0, h, 0};
 }
 
+// rotation taking +x onto the unit vector n: a box face's normal exactly as faceRotation
+Quat rotationFromXTo(Vec3 n) {
+  for (int k = 0; k < 3; ++k) {
+    if (std::fabs(n[k]) == 1)
+      return faceRotation(k, n[k]);
+  }
+  // half way between +x and n: (1 + x.n, x cross n), normalised
+  const double w = 1 + n.x, length = std::sqrt(w * w + n.y * n.y + n.z * n.z);
+  return {w / length, 0, -n.z / length, n.y / length};
+}
+
 // scales a quaternion back to unit length (it drifts when products compound along a path)
 Quat normalized(Quat q) {
   double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
   return {q.w / n, q.x / n, q.y / n, q.z / n};
 }
 
-// area of the parent's face perpendicular to axis k
-double faceArea(Vec3 size, int k) {
-  return size[(k + 1) % 3] * size[(k + 2) % 3];
+// mass of a part: a box's as it always was, other shapes by their volume
+double partMass(PartShape shape, Vec3 size, double density) {
+  if (shape == PartShape::box)
+    return density * size.x * size.y * size.z;
+  return density * shapeVolume(shape, size);
 }
+
+// the part's own material: its density and the morphogene's friction and restitution
+Material materialOf(const PartGene& node) {
+  Material material;
+  material.density = node.density;
+  material.friction = node.friction;
+  material.restitution = node.restitution;
+  return material;
+}
+
+// one instance a connection makes: Sims' mirror copies (bit k: across the parent's plane k) and
+// Minemonics' flipped copy (a half turn about the parent's x axis)
+struct Copy {
+  int mirror = 0;
+  bool flipped = false;
+};
 
 // where a catapult's arm (the root, of `arm`'s size) holds the projectile: the position pushed
 // to the arm's surface, the block against that face, aligned with the arm
@@ -136,8 +165,8 @@ class Embryo {
     root.node = 0;
     root.size = partSize(genome_.nodes[0], 1.0, limits_);
     root.shape = genome_.nodes[0].shape;
-    root.mass = genome_.nodes[0].density * root.size.x * root.size.y * root.size.z;
-    root.material.density = genome_.nodes[0].density;
+    root.mass = partMass(root.shape, root.size, genome_.nodes[0].density);
+    root.material = materialOf(genome_.nodes[0]);
     root.joint = JointType::fixed;
     root.axes = jointAxes(false);
     plan.parts.push_back(root);
@@ -181,7 +210,8 @@ class Embryo {
       if (connection.terminal_only && here.path_counts[node] != from_limit) {
         continue;
       }
-      // one child per combination of the effective reflection bits, the original first
+      // one child per combination of the effective reflection bits, the original first, then
+      // Minemonics' flipped and mirrored copies
       int bits = 0;
       for (int k = 0; k < 3; ++k) {
         if (((connection.reflection >> k) & 1) &&
@@ -189,80 +219,117 @@ class Embryo {
           bits |= 1 << k;
         }
       }
+      std::vector<Copy> copies;
       for (int mirror = 0; mirror < 8; ++mirror) {
-        if ((mirror & ~bits) != 0) {
-          continue;
-        }
+        if ((mirror & ~bits) == 0)
+          copies.push_back(Copy{mirror, false});
+      }
+      const PartPlan& up = plan.parts[index];
+      const Vec3 at = surfacePoint(up.shape, up.size, connection.position).point;
+      // a half turn about x leaves a point on the x axis where it was: no copy
+      if (connection.flip &&
+          (std::fabs(at.y) >= kReflectionEpsilon || std::fabs(at.z) >= kReflectionEpsilon))
+        copies.push_back(Copy{0, true});
+      if (connection.mirror && bits != 7)
+        copies.push_back(Copy{7, false});
+      for (const Copy& copy : copies) {
         if (static_cast<int>(plan.parts.size()) >= limits_.max_parts) {
           plan.truncated = true;
           return;
         }
-        addChild(plan, index, c, mirror);
+        addChild(plan, index, c, copy);
       }
     }
   }
 
-  // makes one child of part `parent` through connection c, mirrored across the parent's
-  // planes in `mirror` (bit k: plane k)
-  void addChild(BodyPlan& plan, int parent, int c, int mirror) {
+  // makes one child of part `parent` through connection c as `copy` says
+  void addChild(BodyPlan& plan, int parent, int c, Copy copy) {
     const ConnectionGene& connection = genome_.connections[c];
     const PartGene& node = genome_.nodes[connection.to];
     const PartPlan& up = plan.parts[parent];
     const Instance& up_instance = instances_[parent];
 
     // all reflections in the parent's frame: this copy's plus the parent's own handedness
-    const int reflect = mirror ^ (up_instance.handed ? 1 << kHandedAxis : 0);
+    const int reflect = copy.mirror ^ (up_instance.handed ? 1 << kHandedAxis : 0);
 
-    // attachment: push the dominant axis to the face, then mirror
-    Vec3 p = connection.position;
-    const int k = dominantAxis(p);
-    const double face_sign = p[k] < 0 ? -1.0 : 1.0;
-    p[k] = face_sign;
-    Quat rotation = faceRotation(k, face_sign) * quatFromEuler(connection.orientation);
+    // attachment on the parent's surface, in the frame whose x axis is the outward normal there;
+    // a flipped copy turned a half turn about the parent's x axis, then the mirrors
+    const SurfacePoint at = surfacePoint(up.shape, up.size, connection.position);
+    Vec3 pivot = at.point;
+    Quat rotation = rotationFromXTo(at.normal) * quatFromEuler(connection.orientation);
+    if (copy.flipped) {
+      pivot.y = -pivot.y;
+      pivot.z = -pivot.z;
+      rotation = halfTurn(0) * rotation;
+    }
     Quat reflection{1, 0, 0, 0};
     int flips = 0;
     for (int axis = 0; axis < 3; ++axis) {
       if ((reflect >> axis) & 1) {
-        p[axis] = -p[axis];
+        pivot[axis] = -pivot[axis];
         reflection = reflection * halfTurn(axis);
         ++flips;
       }
     }
+
+    // the child's size, and its anchor: the point of its surface that meets the parent, turned
+    // to face it (the default anchor, -x, needs no turn)
+    Instance instance;
+    instance.path_counts = up_instance.path_counts;
+    instance.path_counts[connection.to] += 1;
+    instance.scale = up_instance.scale * connection.scale * genome_.nodes[up.node].segment_shrink;
+    const Vec3 size = partSize(node, instance.scale, limits_);
+    SurfacePoint anchor = surfacePoint(node.shape, size, node.anchor);
+    Quat turn{1, 0, 0, 0};
+    const bool turned = anchor.normal != Vec3{-1, 0, 0};
+    if (turned) {
+      turn = conjugate(rotationFromXTo(anchor.normal * -1.0));
+      rotation = rotation * turn;
+    }
+
     // an odd number of mirrors is not a rotation: reflect the child's own frame too
     const bool handed = flips % 2 == 1;
     rotation = reflection * rotation;
     if (handed) {
       rotation = rotation * halfTurn(kHandedAxis);
+      if (anchor.point.y != 0)
+        anchor.point.y = -anchor.point.y;
+    }
+    // the joint's axes: those of the attachment frame, in the child's (mirrored when handed)
+    std::array<Vec3, 3> axes = jointAxes(handed);
+    if (turned) {
+      axes = jointAxes(false);
+      for (Vec3& axis : axes) {
+        axis = rotate(conjugate(turn), axis);
+        if (handed)
+          axis = Vec3{-axis.x, axis.y, -axis.z};
+      }
     }
     rotation = normalized(rotation);
-
-    // the child's box, its joint and its pose
-    Instance instance;
-    instance.path_counts = up_instance.path_counts;
-    instance.path_counts[connection.to] += 1;
-    instance.scale = up_instance.scale * connection.scale;
     instance.handed = handed;
 
+    // the child, its joint and its pose
     PartPlan part;
     part.node = connection.to;
     part.parent = parent;
     part.connection = c;
     part.depth = up.depth + 1;
-    part.size = partSize(node, instance.scale, limits_);
+    part.size = size;
     part.shape = node.shape;
-    part.mass = node.density * part.size.x * part.size.y * part.size.z;
-    part.material.density = node.density;
+    part.mass = partMass(node.shape, part.size, node.density);
+    part.material = materialOf(node);
     part.joint = node.joint_type;
-    part.pivot_in_parent = hadamard(p, up.size * 0.5);
-    part.pivot_in_child = Vec3{-part.size.x * 0.5, 0, 0};
+    part.pivot_in_parent = pivot;
+    part.pivot_in_child = anchor.point;
     part.parent_to_child = rotation;
-    part.axes = jointAxes(handed);
+    part.axes = axes;
     part.joint_limit = node.joint_limit;
-    const double parent_face = faceArea(up.size, k), child_face = part.size.y * part.size.z;
+    const double parent_face = sectionArea(up.shape, up.size, dominantAxis(at.normal));
+    const double child_face = sectionArea(node.shape, part.size, dominantAxis(anchor.normal));
     part.cross_section = limits_.strength_section == StrengthSection::larger
                              ? std::max(parent_face, child_face)
                              : std::min(parent_face, child_face);
-    part.reflected = mirror != 0;
+    part.reflected = copy.mirror != 0 || copy.flipped;
     const Transform local{part.pivot_in_parent - rotate(rotation, part.pivot_in_child), rotation};
     part.pose = compose(up.pose, local);
     part.pose.rotation = normalized(part.pose.rotation);

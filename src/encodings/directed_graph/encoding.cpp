@@ -170,6 +170,32 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
       .require([&g] { return g.chua.limit_softness > 0 && std::isfinite(g.chua.limit_softness); },
                "must be > 0 and finite");
 
+  s.add("genome.morphogenes", g.morphogenes,
+        "Minemonics' morphogenes: random genes and mutation draw the part's shape (box or "
+        "capsule), friction, restitution, joint anchor and segment shrink and the connection's "
+        "flip and mirror flags; off, they keep Sims' defaults");
+  s.add("genome.min_friction", g.min_friction, "smallest friction of a part")
+      .require([&g] { return g.min_friction >= 0 && std::isfinite(g.min_friction); },
+               "must be >= 0 and finite");
+  s.add("genome.max_friction", g.max_friction,
+        "largest friction of a part (Minemonics' code starts every limb at 10)")
+      .require([&g] { return g.max_friction >= g.min_friction && std::isfinite(g.max_friction); },
+               "must be >= genome.min_friction and finite");
+  s.add("genome.min_restitution", g.min_restitution, "smallest restitution of a part")
+      .require([&g] { return g.min_restitution >= 0 && g.min_restitution <= 1; },
+               "must be in [0, 1]");
+  s.add("genome.max_restitution", g.max_restitution,
+        "largest restitution of a part (Minemonics' code starts every limb at 0.2)")
+      .require([&g] { return g.max_restitution >= g.min_restitution && g.max_restitution <= 1; },
+               "must be in [genome.min_restitution, 1]");
+  s.add("genome.min_shrink", g.min_shrink,
+        "smallest segment shrink, the size multiplier of every part branched from a part "
+        "(Minemonics: 1 - 0.66)")
+      .require([&g] { return g.min_shrink > 0 && g.min_shrink <= 1; }, "must be in (0, 1]");
+  s.add("genome.max_shrink", g.max_shrink, "largest segment shrink (Minemonics: 1 + 2)")
+      .require([&g] { return g.max_shrink >= 1 && std::isfinite(g.max_shrink); },
+               "must be >= 1 and finite");
+
   // [evolution]: the structural mutation rates of the graph (their historic keys)
   MutationSettings& m = mutation;
   auto probability = [&s](const char* key, double& rate, const char* help) {

@@ -34,11 +34,13 @@ constexpr double kChuaStartBound = 0.5;
 constexpr double kChuaSpeedMin = 0.001;
 /// The highest chua_speed.
 constexpr double kChuaSpeedMax = 10.0;
+/// PartGene.restitution's value for "the world's restitution" (physics.restitution).
+constexpr double kWorldRestitution = -1;
 /// ConnectionGene.reflection may only use these bits (mirror x, y, z).
 constexpr std::uint8_t kReflectionMask = 0x7;
 
 /// Number of values of each enumeration.
-constexpr int kPartShapeCount = 1;
+constexpr int kPartShapeCount = 2;  // box, capsule
 /// Number of JointType values.
 constexpr int kJointTypeCount = 4;
 /// The joint types' names in the text form and in genome.joint_types, by JointType value.

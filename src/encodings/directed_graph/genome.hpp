@@ -93,6 +93,12 @@ struct PartGene {
   std::uint8_t recursive_limit = 1;     ///< how many times this node may repeat along a path (>= 1)
   std::vector<NeuronGene> neurons;      ///< local neurons, copied into every instance
   std::vector<EffectorGene> effectors;  ///< one per degree of freedom; extra ones are ignored
+  // Minemonics' morphogene (docs/genome.md, "Morphogenes"); the defaults are Sims' boxes
+  double friction = 1;     ///< the part's Coulomb coefficient
+  double restitution = -1; ///< bounciness; negative: the world's (physics.restitution)
+  /// the joint anchor: the direction from the part's centre to where it meets its parent
+  Vec3 anchor{-1, 0, 0};
+  double segment_shrink = 1;  ///< multiplies the size of every part branched from this one
   friend bool operator==(const PartGene&, const PartGene&) = default;
 };
 
@@ -105,6 +111,8 @@ struct ConnectionGene {
   double scale = 1;             ///< child size multiplier, compounding along the path
   std::uint8_t reflection = 0;  ///< bit 0: mirror x, bit 1: mirror y, bit 2: mirror z
   bool terminal_only = false;   ///< only applied when the recursive limit of `from` is reached
+  bool flip = false;    ///< Minemonics: a second copy turned a half turn about the parent's x axis
+  bool mirror = false;  ///< Minemonics: a second copy mirrored through the parent's centre
   JointControllerGene controller;
   friend bool operator==(const ConnectionGene&, const ConnectionGene&) = default;
 };
@@ -199,6 +207,13 @@ struct GenomeLimits {
   double joint_controller_chance = 0.25;
   /// Every chaotic joint controller's circuit: the Chua constants, the limiter and the rate.
   ChuaCircuit chua;
+  /// Minemonics' morphogenes: random genes and mutation draw shapes (box or capsule), friction,
+  /// restitution, joint anchors, segment shrink and the flip and mirror flags; without it they
+  /// keep their defaults (any genome may still carry them).
+  bool morphogenes = false;
+  double min_friction = 0.2, max_friction = 2;     ///< a part's friction
+  double min_restitution = 0, max_restitution = 1;  ///< a part's restitution, when not the world's
+  double min_shrink = 0.34, max_shrink = 3;         ///< segment shrink (Minemonics: 1 - 0.66 .. 1 + 2)
 };
 
 //---------------------------------------------------------------- operations
@@ -212,9 +227,9 @@ Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_
 void validateGenome(const Genome& genome, const GenomeLimits& limits);
 
 /// Current version of the byte format (2: a catapult's projectile after the brain; 3: chaotic
-/// joint controllers). Readers accept this and older versions; a genome is written in the oldest
+/// joint controllers; 4: morphogene fields after the projectile). Readers accept this and older versions; a genome is written in the oldest
 /// version that carries it (1 without a projectile or a chaotic controller).
-constexpr std::uint32_t kGenomeFormatVersion = 3;
+constexpr std::uint32_t kGenomeFormatVersion = 4;
 
 /// The tag that starts the byte form.
 constexpr std::array<char, 4> kGenomeTag = {'C', 'M', 'B', 'G'};
@@ -245,6 +260,9 @@ int dominantAxis(Vec3 position);
 /// limits.max_parts parts (breadth-first), setting `truncated`. The controller is the nested
 /// network, plus the joint oscillators when any connection enables one.
 Creature develop(const Genome& genome, const GenomeLimits& limits);
+
+/// Whether any gene holds a morphogene field (a capsule among them) other than its default.
+bool hasMorphogeneFields(const Genome& genome);
 
 /// The directed-graph genome held by a genotype (GenomeError when it is of another encoding).
 const Genome& graphGenome(const Genotype& genotype);

@@ -91,6 +91,16 @@ class Perturber {
       neuron(n);
     for (EffectorGene& e : p.effectors)
       input(e.input);
+
+    // Minemonics' morphogene, last (without it a node draws what it always drew)
+    if (!limits_.morphogenes)
+      return;
+    redraw(p.shape, kPartShapeCount);
+    number(p.friction, limits_.min_friction, limits_.max_friction);
+    if (p.restitution != kWorldRestitution)
+      number(p.restitution, limits_.min_restitution, limits_.max_restitution);
+    vec3(p.anchor, -kPositionBound, kPositionBound);
+    number(p.segment_shrink, limits_.min_shrink, limits_.max_shrink);
   }
 
   void connection(ConnectionGene& c) {
@@ -102,10 +112,17 @@ class Perturber {
       c.reflection = static_cast<std::uint8_t>(c.reflection ^ (1u << rng_.below(3)));
     }
     flip(c.terminal_only);
+    controller(c.controller);
 
-    // joint controller
-    // joint controller: the fields its kind reads (the kind itself is the run's)
-    JointControllerGene& j = c.controller;
+    // Minemonics' flip and mirror flags, last
+    if (limits_.morphogenes) {
+      flip(c.flip);
+      flip(c.mirror);
+    }
+  }
+
+  // joint controller: the fields its kind reads (the kind itself is the run's)
+  void controller(JointControllerGene& j) {
     flip(j.enabled);
     number(j.amplitude, 0, kControllerAmplitudeMax);
     if (j.kind == JointControllerKind::sine) {

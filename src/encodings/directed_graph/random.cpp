@@ -84,6 +84,16 @@ PartGene randomPartGene(const GenomeLimits& limits, Rng& rng) {
   int dof = degreesOfFreedom(node.joint_type);
   for (int d = 0; d < dof; ++d)
     node.effectors.push_back({randomEffectorInput(node, limits, rng)});
+
+  // Minemonics' morphogene, drawn last (without it a node draws what it always drew)
+  if (limits.morphogenes) {
+    node.shape = static_cast<PartShape>(rng.below(kPartShapeCount));
+    node.friction = rng.uniform(limits.min_friction, limits.max_friction);
+    node.restitution = rng.uniform(limits.min_restitution, limits.max_restitution);
+    for (int k = 0; k < 3; ++k)
+      node.anchor[k] = rng.uniform(-kPositionBound, kPositionBound);
+    node.segment_shrink = rng.uniform(limits.min_shrink, limits.max_shrink);
+  }
   return node;
 }
 
@@ -113,6 +123,12 @@ ConnectionGene randomConnectionGene(std::uint16_t from, std::uint16_t to,
   c.controller.kind = limits.joint_controller;
   if (rng.bernoulli(limits.joint_controller_chance)) {
     c.controller = randomJointController(limits, rng);
+  }
+
+  // Minemonics' flip and mirror flags, each on half the time (its MorphogeneBranch)
+  if (limits.morphogenes) {
+    c.flip = rng.bernoulli(0.5);
+    c.mirror = rng.bernoulli(0.5);
   }
   return c;
 }

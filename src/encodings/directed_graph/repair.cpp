@@ -62,6 +62,14 @@ void fitNode(PartGene& node, const GenomeLimits& limits) {
   int max_recursion = std::clamp(limits.max_recursive_limit, 1, 255);
   node.recursive_limit = static_cast<std::uint8_t>(
       std::clamp(static_cast<int>(node.recursive_limit), 1, max_recursion));
+  node.friction = clampToRange(node.friction, limits.min_friction, limits.max_friction);
+  if (node.restitution != kWorldRestitution) {
+    node.restitution =
+        clampToRange(node.restitution, limits.min_restitution, limits.max_restitution);
+  }
+  for (int k = 0; k < 3; ++k)
+    node.anchor[k] = clampToRange(node.anchor[k], -kPositionBound, kPositionBound);
+  node.segment_shrink = clampToRange(node.segment_shrink, limits.min_shrink, limits.max_shrink);
   fitNeurons(node.neurons, limits.max_neurons_per_node, limits);
   truncate(node.effectors, kMaxEffectors);
   for (EffectorGene& effector : node.effectors)

@@ -78,7 +78,8 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
   const bool chaotic = std::any_of(
       genome.connections.begin(), genome.connections.end(),
       [](const ConnectionGene& c) { return c.controller.kind == JointControllerKind::chaotic; });
-  const std::uint32_t version = chaotic ? 3 : genome.projectile ? 2 : 1;
+  const bool morphogenes = hasMorphogeneFields(genome);
+  const std::uint32_t version = morphogenes ? 4 : chaotic ? 3 : genome.projectile ? 2 : 1;
   w.u32(version);
 
   // nodes
@@ -130,6 +131,18 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
     w.f64(p.density);
     w.vec3(p.position);
     writeInput(w, p.trigger);
+  }
+
+  // (version 4) the morphogene fields of every node, then every connection's flip and mirror
+  if (version >= 4) {
+    for (const PartGene& node : genome.nodes) {
+      w.f64(node.friction);
+      w.f64(node.restitution);
+      w.vec3(node.anchor);
+      w.f64(node.segment_shrink);
+    }
+    for (const ConnectionGene& c : genome.connections)
+      w.u8(static_cast<std::uint8_t>((c.flip ? 1 : 0) | (c.mirror ? 2 : 0)));
   }
   return out;
 }
@@ -211,6 +224,22 @@ Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
       p.density = r.f64();
       p.position = r.vec3();
       p.trigger = readInput(r);
+    }
+  }
+  if (version >= 4) {
+    for (std::size_t i = 0; i < genome.nodes.size(); ++i) {
+      r.context("node " + std::to_string(i) + " morphogene");
+      PartGene& node = genome.nodes[i];
+      node.friction = r.f64();
+      node.restitution = r.f64();
+      node.anchor = r.vec3();
+      node.segment_shrink = r.f64();
+    }
+    for (std::size_t i = 0; i < genome.connections.size(); ++i) {
+      r.context("connection " + std::to_string(i) + " flip and mirror");
+      const std::uint8_t bits = r.upTo("flip and mirror", 3);
+      genome.connections[i].flip = (bits & 1) != 0;
+      genome.connections[i].mirror = (bits & 2) != 0;
     }
   }
   r.context("end");

@@ -44,7 +44,7 @@ bool isDefaultController(const JointControllerGene& controller) {
          isDefaultChuaFields(controller);
 }
 
-constexpr const char* kShapeNames[] = {"box"};
+constexpr const char* kShapeNames[] = {"box", "capsule"};
 constexpr const char* kSourceNames[] = {"constant",      "local_sensor", "local_neuron",
                                         "parent_neuron", "child_neuron", "brain_neuron",
                                         "brain_sensor"};
@@ -249,7 +249,8 @@ void parseNeuronFields(Line& line, NeuronGene& neuron) {
   }
 }
 
-// node fields: shape, size, density, joint, limit, recursion
+// node fields: shape, size, density, joint, limit, recursion, friction, restitution, anchor,
+// shrink
 void parseNodeFields(Line& line, PartGene& node) {
   while (line.more()) {
     std::string_view key = line.next("node field", "a field");
@@ -266,9 +267,18 @@ void parseNodeFields(Line& line, PartGene& node) {
       node.joint_limit = line.vec3("limit");
     } else if (key == "recursion") {
       node.recursive_limit = static_cast<std::uint8_t>(line.integer("recursion", 0, 255));
+    } else if (key == "friction") {
+      node.friction = line.number("friction");
+    } else if (key == "restitution") {
+      node.restitution = line.number("restitution");
+    } else if (key == "anchor") {
+      node.anchor = line.vec3("anchor");
+    } else if (key == "shrink") {
+      node.segment_shrink = line.number("shrink");
     } else {
       line.fail("unknown node field '" + std::string(key) +
-                "' (shape, size, density, joint, limit, recursion)");
+                "' (shape, size, density, joint, limit, recursion, friction, restitution, "
+                "anchor, shrink)");
     }
   }
 }
@@ -297,7 +307,7 @@ std::uint8_t parseReflection(Line& line) {
             std::string(token) + "'");
 }
 
-// connection fields: position, orientation, scale, reflect, terminal_only
+// connection fields: position, orientation, scale, reflect, terminal_only, flip, mirror
 void parseConnectionFields(Line& line, ConnectionGene& c) {
   while (line.more()) {
     std::string_view key = line.next("connection field", "a field");
@@ -311,9 +321,13 @@ void parseConnectionFields(Line& line, ConnectionGene& c) {
       c.reflection = parseReflection(line);
     } else if (key == "terminal_only") {
       c.terminal_only = true;
+    } else if (key == "flip") {
+      c.flip = true;
+    } else if (key == "mirror") {
+      c.mirror = true;
     } else {
       line.fail("unknown connection field '" + std::string(key) +
-                "' (position, orientation, scale, reflect, terminal_only)");
+                "' (position, orientation, scale, reflect, terminal_only, flip, mirror)");
     }
   }
 }
@@ -384,7 +398,18 @@ std::string genomeToText(const Genome& genome) {
     out << " size " << vec3Text(node.dimensions) << " density " << formatNumber(node.density)
         << " joint " << enumText(static_cast<int>(node.joint_type), kJointNames, kJointTypeCount)
         << " limit " << vec3Text(node.joint_limit) << " recursion "
-        << static_cast<int>(node.recursive_limit) << "\n";
+        << static_cast<int>(node.recursive_limit);
+    // the morphogene fields that differ from Sims' boxes
+    const PartGene sims_part;
+    if (node.friction != sims_part.friction)
+      out << " friction " << formatNumber(node.friction);
+    if (node.restitution != sims_part.restitution)
+      out << " restitution " << formatNumber(node.restitution);
+    if (node.anchor != sims_part.anchor)
+      out << " anchor " << vec3Text(node.anchor);
+    if (node.segment_shrink != sims_part.segment_shrink)
+      out << " shrink " << formatNumber(node.segment_shrink);
+    out << "\n";
     for (const NeuronGene& neuron : node.neurons)
       writeNeuron(out, neuron);
     for (const EffectorGene& effector : node.effectors) {
@@ -400,6 +425,10 @@ std::string genomeToText(const Genome& genome) {
       out << " reflect " << reflectionText(c.reflection);
     if (c.terminal_only)
       out << " terminal_only";
+    if (c.flip)
+      out << " flip";
+    if (c.mirror)
+      out << " mirror";
     out << "\n";
     if (!isDefaultController(c.controller)) {
       const JointControllerGene& j = c.controller;

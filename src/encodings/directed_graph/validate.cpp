@@ -93,6 +93,18 @@ void checkNode(std::size_t index, const PartGene& node, const GenomeLimits& limi
   }
   checkRange(where, "recursive_limit", node.recursive_limit, 1, "the minimum",
              limits.max_recursive_limit, "genome.max_recursive_limit");
+  checkRange(where, "friction", node.friction, limits.min_friction, "genome.min_friction",
+             limits.max_friction, "genome.max_friction");
+  if (node.restitution != kWorldRestitution) {
+    checkRange(where, "restitution", node.restitution, limits.min_restitution,
+               "genome.min_restitution", limits.max_restitution, "genome.max_restitution");
+  }
+  for (int k = 0; k < 3; ++k) {
+    checkFixedRange(where, std::string("anchor.") + kAxes[k], node.anchor[k], -kPositionBound,
+                    kPositionBound);
+  }
+  checkRange(where, "segment_shrink", node.segment_shrink, limits.min_shrink, "genome.min_shrink",
+             limits.max_shrink, "genome.max_shrink");
   checkCount(where, "neurons", node.neurons.size(), limits.max_neurons_per_node,
              "genome.max_neurons_per_node");
   for (std::size_t i = 0; i < node.neurons.size(); ++i) {
@@ -194,6 +206,21 @@ void validateGenome(const Genome& genome, const GenomeLimits& limits) {
                limits.max_density, "genome.max_density");
     checkInput("projectile: trigger", p.trigger, limits);
   }
+}
+
+bool hasMorphogeneFields(const Genome& genome) {
+  const PartGene sims_part;
+  for (const PartGene& node : genome.nodes) {
+    if (node.shape != sims_part.shape || node.friction != sims_part.friction ||
+        node.restitution != sims_part.restitution || node.anchor != sims_part.anchor ||
+        node.segment_shrink != sims_part.segment_shrink)
+      return true;
+  }
+  for (const ConnectionGene& c : genome.connections) {
+    if (c.flip || c.mirror)
+      return true;
+  }
+  return false;
 }
 
 }  // namespace cambrian::graph

@@ -161,7 +161,7 @@ TEST(SerializeGenome, BadMagic) {
 TEST(SerializeGenome, NewerVersion) {
   std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(GenomeLimits{}, 1));
   bytes[4] = 9;
-  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (3)");
+  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (4)");
   bytes[4] = 0;
   EXPECT_NE(failure(bytes).find("version 0"), std::string::npos);
 }
