@@ -148,7 +148,7 @@ case $mode in
       --task.evaluation_time 2
     simulate simulate_walker4_hills --genome "$creatures/walker4.genome" --task walk \
       --environment.name hills --environment.hill_height 1.5 --task.evaluation_time 3
-    for creature in leg snake; do
+    for creature in leg snake pod ragdoll; do
       simulate "simulate_minemonics_${creature}_chaotic" \
         --genome "$creatures/minemonics/$creature.genome" \
         --config "$source_dir/jobs/experiments/minemonics/walk-chaotic.ini" \

@@ -648,8 +648,8 @@ TEST(Develop, MinemonicsModelOrganismsHaveTheirPartsJointsAndChaoticControllers)
   expectParts(snake, chain, "snake");
   const FlatPlan pod = flatDevelop(creature("minemonics/pod"), limits);
   std::vector<ExpectedPart> pod_parts{{0, -1, rigid, 1, {0.6, 0.3, 0.15}, false}};
-  for (int i = 0; i < 4; ++i)
-    pod_parts.push_back({1, 0, revolute, 0.8, pod_leg, false});
+  for (int i = 0; i < 4; ++i)  // each connection's leg, then its flipped copy
+    pod_parts.push_back({1, 0, revolute, 0.8, pod_leg, i % 2 == 1});
   expectParts(pod, pod_parts, "pod");
   const FlatPlan ragdoll = flatDevelop(creature("minemonics/ragdoll"), limits);
   EXPECT_EQ(ragdoll.parts.size(), 10u);
@@ -676,7 +676,8 @@ TEST(Develop, MinemonicsModelOrganismsHaveTheirPartsJointsAndChaoticControllers)
       if (std::find(starts.begin(), starts.end(), o.start) == starts.end())
         starts.push_back(o.start);
     }
-    // the leg's one hinge, the snake's five, the pod's four hips, the ragdoll's seven connections
+    // the leg's one hinge, the snake's five, the pod's two pairs of hips, the ragdoll's five
+    // connections (a flipped copy is driven by a controller of its connection's gene)
     const std::size_t connections = creature(std::string("minemonics/") + name).connections.size();
     EXPECT_EQ(starts.size(), connections) << name;
   }
