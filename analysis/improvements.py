@@ -37,7 +37,7 @@ import cambrian_history as ch  # noqa: E402
 PROGRAM = "improvements"
 # the operators that make offspring: the generational scheme's, then Minemonics' reaper's
 BREEDING = ("mutation", "crossover", "graft", "gene_specification", "gene_split", "gene_purge",
-            "branch_specification", "grow_stub", "graft_feature")
+            "branch_specification", "grow_stub", "graft_feature", "segment_crossover")
 OUTCOMES = ("improved", "same", "worse", "failed")
 
 

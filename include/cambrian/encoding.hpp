@@ -90,9 +90,10 @@ enum class Variation : std::uint8_t {
   branch_specification,  ///< connections re-drawn, their ends kept
   grow_stub,             ///< new connections
   graft_feature,         ///< a gene of a second genome and the genes below it, a few levels deep
+  segment_crossover,     ///< a run of genes of each of two genomes, joined (Minemonics)
 };
 /// Number of Variation values.
-constexpr int kVariationKinds = 9;
+constexpr int kVariationKinds = 10;
 /// Lower-case variation name ("gene_split").
 const char* variationName(Variation variation);
 
@@ -130,7 +131,8 @@ class Encoding {
   /// A mutated copy of `parent`; `parameter_rate` is the chance each parameter is perturbed
   /// (the encoding's structural rates are its own settings). Valid under the settings.
   virtual Genotype mutate(const Genotype& parent, double parameter_rate, Rng& rng) const = 0;
-  /// A child of two parents by `variation` (crossover, graft, graft_feature: `a` receives).
+  /// A child of two parents by `variation` (crossover, graft, graft_feature, segment_crossover:
+  /// `a` receives, or gives the first segment).
   /// Valid under the settings.
   virtual Genotype combine(Variation variation, const Genotype& a, const Genotype& b,
                            Rng& rng) const = 0;

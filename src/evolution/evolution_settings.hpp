@@ -1,6 +1,8 @@
 // cambrian: the settings of the genetic algorithm (the [evolution] section of an experiment).
 #pragma once
 
+#include "cambrian/encoding.hpp"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -58,6 +60,8 @@ struct ReaperSettings {
   std::array<double, kReaperShares> shares{1, 1, 1, 1, 1, 1, 1};
   double sow_crossover_fraction = 0.5;  ///< of the sown, the share made by crossover (the rest
                                         ///< random)
+  /// the crossover that sows them: cambrian's (Sims') or Minemonics' segment crossover
+  Variation crossover = Variation::crossover;
   int tournament_size = 10;             ///< contestants when a partner is chosen by tournament
   double tournament_chance = 0.5;       ///< chance a partner comes from a tournament, not at random
 };

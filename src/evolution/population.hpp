@@ -26,9 +26,10 @@ enum class Origin : std::uint8_t {
   branch_specification,
   grow_stub,
   graft_feature,
+  segment_crossover,  ///< Minemonics' crossover (evolution.reaper_crossover)
 };
 /// Number of Origin values.
-constexpr int kOriginKinds = 12;
+constexpr int kOriginKinds = 13;
 
 /// Lower-case origin name ("crossover").
 const char* originName(Origin origin);

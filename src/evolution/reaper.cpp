@@ -68,9 +68,9 @@ void requireReaperOperators(const EvolutionSettings& settings, const Encoding& e
                         reaperShareName(static_cast<ReaperShare>(k)) + "_share: the encoding " +
                         encoding.name() + " has no such operator; set it to 0");
   }
-  if (plan.crossovers > 0 && !encoding.supports(Variation::crossover))
+  if (plan.crossovers > 0 && !encoding.supports(settings.reaper.crossover))
     throw ConfigError("evolution.sow_crossover_fraction: the encoding " + encoding.name() +
-                      " has no crossover; set it to 0");
+                      " has no " + variationName(settings.reaper.crossover) + "; set it to 0");
 }
 
 std::size_t reaperPartner(std::size_t count, const ReaperSettings& settings, Rng& rng) {
@@ -161,8 +161,11 @@ Population Breeder::reap(const Population& evaluated) {
   for (int n = 0; n < plan.crossovers; ++n) {
     const Individual& parent = survivor(static_cast<std::size_t>(n) / per_parent);
     const Individual& partner = survivor(reaperPartner(survivors, settings, selection));
-    add(Origin::crossover, {parent.id, partner.id}, [&](Rng& rng, int) {
-      return encoding_.combine(Variation::crossover, parent.genome, partner.genome, rng);
+    const Origin origin = settings.crossover == Variation::segment_crossover
+                              ? Origin::segment_crossover
+                              : Origin::crossover;
+    add(origin, {parent.id, partner.id}, [&](Rng& rng, int) {
+      return encoding_.combine(settings.crossover, parent.genome, partner.genome, rng);
     });
   }
 

@@ -63,7 +63,8 @@ const char* variationName(Variation variation) {
                                                           "gene_purge",
                                                           "branch_specification",
                                                           "grow_stub",
-                                                          "graft_feature"};
+                                                          "graft_feature",
+                                                          "segment_crossover"};
   const auto index = static_cast<std::size_t>(variation);
   return index < std::size(kNames) ? kNames[index] : "unknown";
 }

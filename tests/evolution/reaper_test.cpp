@@ -103,6 +103,28 @@ TEST(ReaperPartner, TournamentsFavourTheTopAndUniformDrawsDoNot) {
   EXPECT_EQ(reaperPartner(1, settings, rng), 0u);
 }
 
+// evolution.reaper_crossover = segment_crossover sows by Minemonics' crossover, recorded as such
+TEST(Reaper, SowsBySegmentCrossoverWhenChosen) {
+  EvolutionSettings settings = reaperRun(40);
+  settings.reaper.crossover = Variation::segment_crossover;
+  const ReaperPlan plan = planReaper(settings);
+  Breeder breeder(settings, kEncoding);
+  Population population = breeder.initialPopulation();
+  evaluate(population);
+  const Population next = breeder.nextGeneration(population);
+  int segments = 0, crossovers = 0;
+  for (const Individual& child : next.individuals) {
+    segments += child.origin == Origin::segment_crossover;
+    crossovers += child.origin == Origin::crossover;
+    if (child.origin == Origin::segment_crossover)
+      EXPECT_EQ(child.parents.size(), 2u);
+    ASSERT_NO_THROW(kEncoding.validate(child.genome));
+  }
+  EXPECT_EQ(segments, plan.crossovers);
+  EXPECT_EQ(crossovers, 0);
+  EXPECT_STREQ(originName(Origin::segment_crossover), "segment_crossover");
+}
+
 // over many generations: every generation has the plan's kinds in their counts, the kept are
 // the best survivors with their outcomes, no culled individual is a parent, and every genome is
 // valid

@@ -241,6 +241,11 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
         "reaper: most levels of genes a feature graft copies (Minemonics: 10)")
       .require([&r] { return r.graft_depth_max >= r.graft_depth_min && r.graft_depth_max <= 64; },
                "must be in evolution.graft_depth_min..64");
+  s.add("evolution.segment_branch_redraws", r.segment_branch_redraws,
+        "reaper: connections a segment crossover re-draws after joining the two segments "
+        "(Minemonics: 10)")
+      .require([&r] { return r.segment_branch_redraws >= 0 && r.segment_branch_redraws <= 1000; },
+               "must be in 0..1000");
   s.add("evolution.keep_unconnected", m.keep_unconnected,
         "keep nodes unreachable from the root (Chaumont) instead of collecting them");
 }
@@ -308,6 +313,8 @@ Genotype DirectedGraphEncoding::combine(Variation variation, const Genotype& a, 
     return makeGenotype(graft(first, second, limits, rng, graft_into));
   if (variation == Variation::graft_feature)
     return makeGenotype(graftFeature(first, second, limits, reaper, rng));
+  if (variation == Variation::segment_crossover)
+    return makeGenotype(crossSegments(first, second, limits, reaper, rng));
   if (variation != Variation::crossover)
     throw GenomeError(std::string("directed_graph: ") + variationName(variation) +
                       " takes one parent");

@@ -209,4 +209,54 @@ Genome graftFeature(const Genome& receiver, const Genome& donor, const GenomeLim
   return graft(receiver, featureOf(donor, first, depth), limits, rng, GraftInto::root);
 }
 
+Genome crossSegments(const Genome& mother, const Genome& father, const GenomeLimits& limits,
+                     const ReaperOperatorSettings& settings, Rng& rng) {
+  // the segments: mother's first..last (inclusive), father's first..end (exclusive)
+  const std::size_t mother_first = rng.below(mother.nodes.size());
+  const std::size_t mother_last =
+      mother_first + rng.below(mother.nodes.size() - mother_first);
+  const std::size_t father_first = rng.below(father.nodes.size());
+  const std::size_t father_end = father_first + rng.below(father.nodes.size() - father_first);
+
+  Genome child;
+  child.brain = mother.brain;
+  child.projectile = mother.projectile;
+  const std::size_t mother_count = mother_last - mother_first + 1;
+  child.nodes.assign(mother.nodes.begin() + static_cast<std::ptrdiff_t>(mother_first),
+                     mother.nodes.begin() + static_cast<std::ptrdiff_t>(mother_last + 1));
+  child.nodes.insert(child.nodes.end(),
+                     father.nodes.begin() + static_cast<std::ptrdiff_t>(father_first),
+                     father.nodes.begin() + static_cast<std::ptrdiff_t>(father_end));
+  const std::size_t nodes = child.nodes.size();
+
+  // each segment's connections, their ends inside it kept, the others repaired into the child
+  std::vector<std::size_t> repaired;
+  auto carry = [&](const Genome& parent, std::size_t first, std::size_t end, std::size_t offset) {
+    for (const ConnectionGene& c : parent.connections) {
+      if (c.from < first || c.from >= end)
+        continue;
+      ConnectionGene copy = c;
+      copy.from = static_cast<std::uint16_t>(offset + (c.from - first));
+      if (c.to >= first && c.to < end) {
+        copy.to = static_cast<std::uint16_t>(offset + (c.to - first));
+      } else {
+        repaired.push_back(child.connections.size());
+      }
+      child.connections.push_back(copy);
+    }
+  };
+  carry(mother, mother_first, mother_last + 1, 0);
+  carry(father, father_first, father_end, mother_count);
+  for (std::size_t c : repaired)
+    child.connections[c].to = static_cast<std::uint16_t>(rng.below(nodes));
+
+  // re-drawn connections
+  for (int n = 0; n < settings.segment_branch_redraws && !child.connections.empty(); ++n) {
+    ConnectionGene& chosen = child.connections[rng.below(child.connections.size())];
+    chosen = randomConnectionGene(chosen.from, chosen.to, limits, rng);
+  }
+  fitToLimits(child, limits);
+  return child;
+}
+
 }  // namespace cambrian::graph

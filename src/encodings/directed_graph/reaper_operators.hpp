@@ -18,6 +18,7 @@ struct ReaperOperatorSettings {
   int grow_stub_max = 2;
   int graft_depth_min = 5;  ///< a feature graft copies 5..10 levels of genes
   int graft_depth_max = 10;
+  int segment_branch_redraws = 10;  ///< a segment crossover re-draws 10 random connections
 };
 
 /// Gene specification: each node, with gene_specification_chance, is replaced by a random node
@@ -57,5 +58,15 @@ Genome featureOf(const Genome& donor, std::uint16_t first, int depth);
 /// (featureOf) copied into `receiver`, which one of its connections (or a new one) leads into.
 Genome graftFeature(const Genome& receiver, const Genome& donor, const GenomeLimits& limits,
                     const ReaperOperatorSettings& settings, Rng& rng);
+
+/// Minemonics' crossover: a run of `mother`'s genes (first..last, drawn uniformly, at least one)
+/// followed by a run of `father`'s (first up to an end drawn from first..its last gene, possibly
+/// none), each gene with the connections leaving it. A connection whose end lies in its segment
+/// keeps it; one whose end does not is led into a child gene drawn uniformly (the repair that
+/// joins the segments); then segment_branch_redraws connections drawn uniformly are re-drawn
+/// with the same ends. The mother's first gene is the child's root; the brain and projectile are
+/// the mother's.
+Genome crossSegments(const Genome& mother, const Genome& father, const GenomeLimits& limits,
+                     const ReaperOperatorSettings& settings, Rng& rng);
 
 }  // namespace cambrian::graph

@@ -331,3 +331,82 @@ TEST(ReaperOperators, AFeatureIsTheGenesDownToItsDepth) {
 
 }  // namespace
 }  // namespace cambrian::graph
+
+namespace cambrian::graph {
+namespace {
+
+// a chain genome of `n` boxes, node i of side 0.1 + 0.01 i + `mark`, each led to from the last
+Genome chainOf(int n, double mark) {
+  Genome g;
+  for (int i = 0; i < n; ++i) {
+    PartGene node;
+    node.dimensions = {0.1 + 0.01 * i + mark, 0.1, 0.1};
+    g.nodes.push_back(node);
+    if (i > 0) {
+      ConnectionGene c;
+      c.from = static_cast<std::uint16_t>(i - 1);
+      c.to = static_cast<std::uint16_t>(i);
+      g.connections.push_back(c);
+    }
+  }
+  return g;
+}
+
+// Minemonics' crossover: a run of the mother's genes then a run of the father's, each with the
+// connections leaving it; ends inside a segment kept, the others led into the child; valid
+TEST(ReaperOperators, ASegmentCrossoverJoinsARunOfEachParent) {
+  const GenomeLimits limits;
+  ReaperOperatorSettings settings;
+  settings.segment_branch_redraws = 0;
+  const Genome mother = chainOf(6, 0), father = chainOf(5, 0.5);
+  std::set<std::size_t> sizes;
+  int with_father = 0;
+  for (std::uint64_t i = 0; i < 400; ++i) {
+    Rng rng(5, RngPurpose::test, i, 0);
+    const Genome child = crossSegments(mother, father, limits, settings, rng);
+    ASSERT_NO_THROW(validateGenome(child, limits)) << i;
+    sizes.insert(child.nodes.size());
+    // the mother's run, then the father's: consecutive genes of each
+    std::size_t m = 0;
+    while (m < child.nodes.size() && child.nodes[m].dimensions.x < 0.5)
+      ++m;
+    ASSERT_GE(m, 1u) << i;  // the root is the mother's
+    for (std::size_t k = 1; k < child.nodes.size(); ++k) {
+      if (k == m)
+        continue;
+      EXPECT_NEAR(child.nodes[k].dimensions.x - child.nodes[k - 1].dimensions.x, 0.01, 1e-12);
+    }
+    with_father += child.nodes.size() > m;
+    // every gene's outgoing chain link inside its run is kept; every connection is valid
+    for (const ConnectionGene& c : child.connections) {
+      ASSERT_LT(c.to, child.nodes.size());
+      const bool same_run = (c.from < m) == (c.to < m);
+      if (same_run && c.to == c.from + 1u)
+        continue;
+      // a repaired end: the parent's link left its run (the last gene of a run)
+      EXPECT_TRUE(c.from + 1u == m || c.from + 1u == child.nodes.size()) << i;
+    }
+  }
+  EXPECT_GT(sizes.size(), 6u);
+  EXPECT_GT(with_father, 200);
+
+  // the re-draws change connections but keep their ends
+  settings.segment_branch_redraws = 10;
+  Rng plain(9, RngPurpose::test, 0, 0), redrawn(9, RngPurpose::test, 0, 0);
+  ReaperOperatorSettings none = settings;
+  none.segment_branch_redraws = 0;
+  const Genome a = crossSegments(mother, father, limits, none, plain);
+  const Genome b = crossSegments(mother, father, limits, settings, redrawn);
+  ASSERT_EQ(a.nodes, b.nodes);
+  ASSERT_EQ(a.connections.size(), b.connections.size());
+  bool changed = false;
+  for (std::size_t c = 0; c < a.connections.size(); ++c) {
+    EXPECT_EQ(a.connections[c].from, b.connections[c].from);
+    EXPECT_EQ(a.connections[c].to, b.connections[c].to);
+    changed = changed || !(a.connections[c] == b.connections[c]);
+  }
+  EXPECT_TRUE(changed || a.connections.empty());
+}
+
+}  // namespace
+}  // namespace cambrian::graph
