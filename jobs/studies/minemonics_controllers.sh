@@ -8,7 +8,9 @@
 #   environment: CAMBRIAN (binary, default build/release/src/app/cambrian), OUT (default
 #   runs/minemonics), WORKERS (default: the number of cores), EVOLVE_ARGS (more evolve options;
 #   docs/minemonics.md's table was made with "--evolution.scheme generational
-#   --physics.max_joint_speed 0", before the files took the reaper and the joint-speed discard)
+#   --physics.max_joint_speed 0", before the files took the reaper and the joint-speed discard),
+#   KINDS (the files walk-KIND.ini compared, default "sine chaotic"; "sine hills" compares the
+#   plane and the hill), TITLE (the figure's)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 skip_runs=false
@@ -22,10 +24,12 @@ cambrian=${CAMBRIAN:-build/release/src/app/cambrian}
 out=${OUT:-runs/minemonics}
 workers=${WORKERS:-$(nproc)}
 evolve_args=${EVOLVE_ARGS:-}
+read -r -a kinds <<< "${KINDS:-sine chaotic}"
+title=${TITLE:-Minemonics: sine vs chaotic joint controllers}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 MPLBACKEND=Agg
 
 histories=()
-for kind in sine chaotic; do
+for kind in "${kinds[@]}"; do
   for seed in "${seeds[@]}"; do
     dir=$out/$kind-$seed
     if ! $skip_runs; then
@@ -43,4 +47,4 @@ for kind in sine chaotic; do
 done
 
 /usr/bin/python3 analysis/plot_fitness.py "${histories[@]}" \
-  --title "Minemonics: sine vs chaotic joint controllers" --output "$out/sine_vs_chaotic.png"
+  --title "$title" --output "$out/${kinds[0]}_vs_${kinds[1]:-none}.png"
