@@ -60,7 +60,10 @@ struct PartPlan {
   Vec3 pivot_in_child;                 ///< joint point in this part's frame
   Quat parent_to_child;                ///< this part's frame relative to the parent's frame
   std::array<Vec3, 3> axes{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  ///< in this part's frame
-  Vec3 joint_limit;          ///< symmetric limit per degree of freedom, radians (prismatic: m)
+  Vec3 joint_limit;  ///< symmetric limit per degree of freedom, radians (prismatic: m)
+  /// passive damping per degree of freedom, N m s / rad (prismatic: N s / m); negative: the
+  /// world's (physics.joint_damping)
+  Vec3 joint_damping{-1, -1, -1};
   double cross_section = 0;  ///< m^2, a face meeting at the joint (genome.strength_section);
                              ///< physics turns it into the joint's maximum torque
   bool reflected = false;    ///< made through a reflected connection
@@ -138,6 +141,11 @@ struct BodyPlan {
   double totalMass() const;
   double totalVolume() const;
 };
+
+/// The damping of degree of freedom `dof` of the part's joint: its own, else `world_damping`.
+inline double jointDamping(const PartPlan& part, int dof, double world_damping) {
+  return part.joint_damping[dof] < 0 ? world_damping : part.joint_damping[dof];
+}
 
 /// Volume of a part of `shape` and full size `size`, m^3.
 double shapeVolume(PartShape shape, Vec3 size);

@@ -91,12 +91,12 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
         .require([&weight] { return weight >= 0 && std::isfinite(weight); },
                  "must be >= 0 and finite");
   }
-  s.addChoice("evolution.reaper_crossover", r.crossover,
-              {{"crossover", Variation::crossover},
-               {"segment_crossover", Variation::segment_crossover}},
-              "reaper: the crossover that sows: crossover (Sims', the genes of two parents aligned "
-              "by index) | segment_crossover (Minemonics': a run of genes of each parent, joined "
-              "and then re-drawn at evolution.segment_branch_redraws connections)");
+  s.addChoice(
+      "evolution.reaper_crossover", r.crossover,
+      {{"crossover", Variation::crossover}, {"segment_crossover", Variation::segment_crossover}},
+      "reaper: the crossover that sows: crossover (Sims', the genes of two parents aligned "
+      "by index) | segment_crossover (Minemonics': a run of genes of each parent, joined "
+      "and then re-drawn at evolution.segment_branch_redraws connections)");
   probability("evolution.sow_crossover_fraction", r.sow_crossover_fraction,
               "reaper: share of the sown made by crossover, the rest random (Minemonics: 0.5)");
   s.add("evolution.reaper_tournament_size", r.tournament_size,

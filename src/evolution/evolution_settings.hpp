@@ -62,8 +62,8 @@ struct ReaperSettings {
                                         ///< random)
   /// the crossover that sows them: cambrian's (Sims') or Minemonics' segment crossover
   Variation crossover = Variation::crossover;
-  int tournament_size = 10;             ///< contestants when a partner is chosen by tournament
-  double tournament_chance = 0.5;       ///< chance a partner comes from a tournament, not at random
+  int tournament_size = 10;        ///< contestants when a partner is chosen by tournament
+  double tournament_chance = 0.5;  ///< chance a partner comes from a tournament, not at random
 };
 
 /// Everything the generational Sims / Chaumont scheme and the reaper need. The encoding's own

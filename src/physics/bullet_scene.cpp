@@ -30,8 +30,8 @@ btVector3 inertiaOf(PartShape shape, Vec3 size, double mass) {
     const double middle = h, ends = 4.0 / 3.0 * r;  // volumes over pi r^2
     const double m_middle = mass * middle / (middle + ends), m_ends = mass - m_middle;
     const double along = m_middle * r * r / 2 + m_ends * 2 * r * r / 5;
-    const double across = m_middle * (h * h / 12 + r * r / 4) +
-                          m_ends * (2 * r * r / 5 + h * h / 4 + 3 * h * r / 8);
+    const double across =
+        m_middle * (h * h / 12 + r * r / 4) + m_ends * (2 * r * r / 5 + h * h / 4 + 3 * h * r / 8);
     inertia.setValue(along, across, across);
     return inertia;
   }

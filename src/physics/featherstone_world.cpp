@@ -288,14 +288,20 @@ void JointLimit::createConstraintRows(btMultiBodyConstraintArray& rows,
 // energy out, however light a limb (an explicit torque -damping x v reverses a light limb's
 // speed each step once damping x step exceeds its inertia about the joint, and pumps energy).
 // With R the block of the inverse joint-space inertia over the damped coordinates (one response
-// of the body per coordinate), the impulses p solve (I / (damping x step) + R) p = -v.
+// of the body per coordinate) and D their dampings, the impulses p solve
+// ((D x step)^-1 + R) p = -v.
 class ImplicitJointDamping {
  public:
-  ImplicitJointDamping(btMultiBody& body, const std::vector<int>& links, double damping,
-                       JointResponses& responses)
-      : body_(body), damping_(damping), responses_(responses) {
-    for (int link : links)
-      axes_.push_back(6 + body.getLink(link).m_dofOffset);
+  // `damping[k]` is link `links[k]`'s; links without damping are left out
+  ImplicitJointDamping(btMultiBody& body, const std::vector<int>& links,
+                       const std::vector<double>& damping, JointResponses& responses)
+      : body_(body), responses_(responses) {
+    for (std::size_t k = 0; k < links.size(); ++k) {
+      if (damping[k] > 0) {
+        axes_.push_back(6 + body.getLink(links[k]).m_dofOffset);
+        damping_.push_back(damping[k]);
+      }
+    }
   }
 
   // (built only for a body with jointed links and damping > 0; the vectors keep their capacity,
@@ -309,8 +315,8 @@ class ImplicitJointDamping {
     for (int j = 0; j < n; ++j)
       response_[j] = responses_.along(axes_[j]);
     // the system, symmetric positive definite; its Cholesky factor in place (lower triangle)
-    const double compliance = 1.0 / (damping_ * step);
     for (int i = 0; i < n; ++i) {
+      const double compliance = 1.0 / (damping_[i] * step);
       for (int j = 0; j <= i; ++j)
         system_[i * n + j] =
             0.5 * (response_[j][axes_[i]] + response_[i][axes_[j]]) + (i == j ? compliance : 0.0);
@@ -353,9 +359,9 @@ class ImplicitJointDamping {
 
  private:
   btMultiBody& body_;
-  double damping_;
   JointResponses& responses_;
-  std::vector<int> axes_;  // index of each damped coordinate in the body's velocity vector
+  std::vector<int> axes_;        // index of each damped coordinate in the body's velocity vector
+  std::vector<double> damping_;  // and its damping, N m s / rad
   std::vector<const double*> response_;  // this step's response along each of them
   std::vector<double> system_, impulse_, change_;
 };
@@ -543,6 +549,7 @@ void FeatherstoneWorld::build(double birth_height) {
                           toBt(part.axes[0]), parent_offset, com_offset, true);
       dof_link_[i][0] = next_link;
       damped_links_.push_back(next_link);
+      link_damping_.push_back(jointDamping(part, 0, physics_.joint_damping));
       part_link[i] = next_link++;
       continue;
     }
@@ -562,6 +569,7 @@ void FeatherstoneWorld::build(double birth_height) {
           last ? com_offset : btVector3(0, 0, 0), true);
       dof_link_[i][d] = link;
       damped_links_.push_back(link);
+      link_damping_.push_back(jointDamping(part, d, physics_.joint_damping));
       if (!last)
         virtual_link_part_[link] = i;
     }
@@ -626,9 +634,11 @@ void FeatherstoneWorld::build(double birth_height) {
   }
 
   // the joint damping, solved implicitly before the constraints (else a torque, applyTorques)
-  if (physics_.implicit_damping && physics_.joint_damping > 0 && !damped_links_.empty()) {
-    b.damping = std::make_unique<ImplicitJointDamping>(body, damped_links_, physics_.joint_damping,
-                                                       *b.responses);
+  const bool damped = std::any_of(link_damping_.begin(), link_damping_.end(),
+                                  [](double damping) { return damping > 0; });
+  if (physics_.implicit_damping && damped) {
+    b.damping =
+        std::make_unique<ImplicitJointDamping>(body, damped_links_, link_damping_, *b.responses);
     b.world.setDamping(b.damping.get());
   }
 
@@ -771,8 +781,8 @@ void FeatherstoneWorld::applyTorques(std::span<const double> commands, double su
 
   // passive damping on every jointed link, when not solved implicitly
   if (!physics_.implicit_damping) {
-    for (int link : damped_links_)
-      body.addJointTorque(link, -physics_.joint_damping * body.getJointVel(link));
+    for (std::size_t k = 0; k < damped_links_.size(); ++k)
+      body.addJointTorque(damped_links_[k], -link_damping_[k] * body.getJointVel(damped_links_[k]));
   }
 
   // saturated motors: the command's sign picks the target speed, its size the torque budget

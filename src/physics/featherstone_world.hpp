@@ -82,6 +82,7 @@ class FeatherstoneWorld : public World {
   std::size_t held_first_ = 0;          // the first held object's index among the rigid bodies
   std::vector<bool> released_;          // per held object: let go
   std::vector<int> damped_links_;       // every revolute or prismatic link, real or virtual
+  std::vector<double> link_damping_;    // and its joint damping (PartPlan::joint_damping)
   std::vector<int> virtual_link_part_;  // per Bullet link: the part whose pivot holds it (virtual
                                         // links of multi-DoF joints), or -1 (the part's own link)
   double work_bound_ = 0;               // effectorWorkBound()

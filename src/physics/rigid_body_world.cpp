@@ -201,7 +201,7 @@ void RigidBodyWorld::addJoints() {
   // motors on the effectors' axes, idle until the controller drives them
   RigidBodyObjects& b = *bullet_;
   auto make = [&](btRigidBody& a, btRigidBody& c, const btTransform& in_a, const btTransform& in_c,
-                  JointType joint, Vec3 limit) {
+                  JointType joint, Vec3 limit, Vec3 damping) {
     auto constraint = std::make_unique<btGeneric6DofSpring2Constraint>(a, c, in_a, in_c, RO_ZYX);
     for (int axis = 0; axis < 6; ++axis)
       constraint->setLimit(axis, 0, 0);
@@ -209,10 +209,11 @@ void RigidBodyWorld::addJoints() {
     for (int d = 0; d < dofs; ++d) {
       const int axis = constraintAxis(joint, d);
       constraint->setLimit(axis, -limit[d], limit[d]);
-      if (physics_.implicit_damping && physics_.joint_damping > 0) {
+      const double own = damping[d] < 0 ? physics_.joint_damping : damping[d];
+      if (physics_.implicit_damping && own > 0) {
         constraint->enableSpring(axis, true);
         constraint->setStiffness(axis, 0);
-        constraint->setDamping(axis, physics_.joint_damping);
+        constraint->setDamping(axis, own);
       }
     }
     b.world.addConstraint(constraint.get(), true);
@@ -227,7 +228,7 @@ void RigidBodyWorld::addJoints() {
     const btTransform in_parent(btMatrix3x3(toBt(part.parent_to_child)) * frame,
                                 toBt(part.pivot_in_parent));
     b.joints.push_back(make(*b.parts[part.parent], *b.parts[i], in_parent, in_child, part.joint,
-                            part.joint_limit));
+                            part.joint_limit, part.joint_damping));
   }
   for (const LoopJoint& loop : plan_.loops) {
     const int part_count = static_cast<int>(plan_.parts.size());
@@ -245,7 +246,7 @@ void RigidBodyWorld::addJoints() {
     const btMatrix3x3 b_in_a =
         a.getWorldTransform().getBasis().transpose() * c.getWorldTransform().getBasis();
     const btTransform in_a(b_in_a * frame, toBt(loop.pivot_in_a));
-    b.loops.push_back(make(a, c, in_a, in_b, loop.joint, loop.joint_limit));
+    b.loops.push_back(make(a, c, in_a, in_b, loop.joint, loop.joint_limit, Vec3{-1, -1, -1}));
   }
   if (physics_.actuation == Actuation::saturated_motor) {
     for (const EffectorPlan& effector : plan_.effectors) {
@@ -299,7 +300,7 @@ void RigidBodyWorld::release(std::span<const double> commands) {
 
 void RigidBodyWorld::applyTorques(std::span<const double> commands) {
   RigidBodyObjects& b = *bullet_;
-  const bool explicit_damping = !physics_.implicit_damping && physics_.joint_damping > 0;
+  const bool explicit_damping = !physics_.implicit_damping;
   const bool torques = physics_.actuation == Actuation::torque && !commands.empty();
   // a torque (prismatic: force) along a joint's axis, on the child and against the parent
   auto push = [&](int part, int dof, double amount) {
@@ -316,9 +317,13 @@ void RigidBodyWorld::applyTorques(std::span<const double> commands) {
     }
   };
   if (explicit_damping) {
-    for (std::size_t i = 1; i < plan_.parts.size(); ++i)
-      for (int d = 0; d < degreesOfFreedom(plan_.parts[i].joint); ++d)
-        push(static_cast<int>(i), d, -physics_.joint_damping * jointSpeed(static_cast<int>(i), d));
+    for (std::size_t i = 1; i < plan_.parts.size(); ++i) {
+      for (int d = 0; d < degreesOfFreedom(plan_.parts[i].joint); ++d) {
+        const double damping = jointDamping(plan_.parts[i], d, physics_.joint_damping);
+        if (damping > 0)
+          push(static_cast<int>(i), d, -damping * jointSpeed(static_cast<int>(i), d));
+      }
+    }
   }
 
   for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {

@@ -136,8 +136,9 @@ TEST(BodyPlan, SurfacePointsLieOnTheSurfaceWithUnitOutwardNormals) {
     const Vec3 nearest{std::clamp(s.point.x, -0.3, 0.3), 0, 0};
     EXPECT_LT(norm(s.point - nearest - s.normal * 0.1), 1e-12);
     // and along the direction asked
-    if (norm(d) > 0)
+    if (norm(d) > 0) {
       EXPECT_LT(norm(s.point * (1 / norm(s.point)) - d * (1 / norm(d))), 1e-12);
+    }
   }
   EXPECT_LT(norm(surfacePoint(PartShape::capsule, size, {-1, 0, 0}).point - Vec3{-0.4, 0, 0}),
             1e-15);

@@ -116,8 +116,9 @@ TEST(Reaper, SowsBySegmentCrossoverWhenChosen) {
   for (const Individual& child : next.individuals) {
     segments += child.origin == Origin::segment_crossover;
     crossovers += child.origin == Origin::crossover;
-    if (child.origin == Origin::segment_crossover)
+    if (child.origin == Origin::segment_crossover) {
       EXPECT_EQ(child.parents.size(), 2u);
+    }
     ASSERT_NO_THROW(kEncoding.validate(child.genome));
   }
   EXPECT_EQ(segments, plan.crossovers);

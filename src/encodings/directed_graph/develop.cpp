@@ -324,6 +324,7 @@ class Embryo {
     part.parent_to_child = rotation;
     part.axes = axes;
     part.joint_limit = node.joint_limit;
+    part.joint_damping = node.joint_damping;
     const double parent_face = sectionArea(up.shape, up.size, dominantAxis(at.normal));
     const double child_face = sectionArea(node.shape, part.size, dominantAxis(anchor.normal));
     part.cross_section = limits_.strength_section == StrengthSection::larger

@@ -172,7 +172,8 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
 
   s.add("genome.morphogenes", g.morphogenes,
         "Minemonics' morphogenes: random genes and mutation draw the part's shape (box or "
-        "capsule), friction, restitution, joint anchor and segment shrink and the connection's "
+        "capsule), friction, restitution, joint anchor, segment shrink and joint damping and the "
+        "connection's "
         "flip and mirror flags; off, they keep Sims' defaults");
   s.add("genome.min_friction", g.min_friction, "smallest friction of a part")
       .require([&g] { return g.min_friction >= 0 && std::isfinite(g.min_friction); },
@@ -195,6 +196,17 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
   s.add("genome.max_shrink", g.max_shrink, "largest segment shrink (Minemonics: 1 + 2)")
       .require([&g] { return g.max_shrink >= 1 && std::isfinite(g.max_shrink); },
                "must be >= 1 and finite");
+  s.add("genome.min_joint_damping", g.min_joint_damping,
+        "smallest damping of a joint's own, N m s / rad (Minemonics: 0.001)")
+      .require([&g] { return g.min_joint_damping >= 0 && std::isfinite(g.min_joint_damping); },
+               "must be >= 0 and finite");
+  s.add("genome.max_joint_damping", g.max_joint_damping,
+        "largest damping of a joint's own, N m s / rad (Minemonics: 0.5)")
+      .require(
+          [&g] {
+            return g.max_joint_damping >= g.min_joint_damping && std::isfinite(g.max_joint_damping);
+          },
+          "must be >= genome.min_joint_damping and finite");
 
   // [evolution]: the structural mutation rates of the graph (their historic keys)
   MutationSettings& m = mutation;

@@ -36,6 +36,8 @@ constexpr double kChuaSpeedMin = 0.001;
 constexpr double kChuaSpeedMax = 10.0;
 /// PartGene.restitution's value for "the world's restitution" (physics.restitution).
 constexpr double kWorldRestitution = -1;
+/// PartGene.joint_damping's value for "the world's damping" (physics.joint_damping).
+constexpr double kWorldDamping = -1;
 /// ConnectionGene.reflection may only use these bits (mirror x, y, z).
 constexpr std::uint8_t kReflectionMask = 0x7;
 

@@ -94,11 +94,13 @@ struct PartGene {
   std::vector<NeuronGene> neurons;      ///< local neurons, copied into every instance
   std::vector<EffectorGene> effectors;  ///< one per degree of freedom; extra ones are ignored
   // Minemonics' morphogene (docs/genome.md, "Morphogenes"); the defaults are Sims' boxes
-  double friction = 1;     ///< the part's Coulomb coefficient
-  double restitution = -1; ///< bounciness; negative: the world's (physics.restitution)
+  double friction = 1;      ///< the part's Coulomb coefficient
+  double restitution = -1;  ///< bounciness; negative: the world's (physics.restitution)
   /// the joint anchor: the direction from the part's centre to where it meets its parent
   Vec3 anchor{-1, 0, 0};
   double segment_shrink = 1;  ///< multiplies the size of every part branched from this one
+  /// the joint's damping per degree of freedom, N m s / rad; negative: physics.joint_damping
+  Vec3 joint_damping{-1, -1, -1};
   friend bool operator==(const PartGene&, const PartGene&) = default;
 };
 
@@ -208,12 +210,14 @@ struct GenomeLimits {
   /// Every chaotic joint controller's circuit: the Chua constants, the limiter and the rate.
   ChuaCircuit chua;
   /// Minemonics' morphogenes: random genes and mutation draw shapes (box or capsule), friction,
-  /// restitution, joint anchors, segment shrink and the flip and mirror flags; without it they
-  /// keep their defaults (any genome may still carry them).
+  /// restitution, joint anchors, segment shrink, joint damping and the flip and mirror flags;
+  /// without it they keep their defaults (any genome may still carry them).
   bool morphogenes = false;
-  double min_friction = 0.2, max_friction = 2;     ///< a part's friction
+  double min_friction = 0.2, max_friction = 2;      ///< a part's friction
   double min_restitution = 0, max_restitution = 1;  ///< a part's restitution, when not the world's
-  double min_shrink = 0.34, max_shrink = 3;         ///< segment shrink (Minemonics: 1 - 0.66 .. 1 + 2)
+  double min_shrink = 0.34, max_shrink = 3;  ///< segment shrink (Minemonics: 1 - 0.66 .. 1 + 2)
+  /// a joint's own damping, N m s / rad (Minemonics: 0.001 .. 0.5)
+  double min_joint_damping = 0.001, max_joint_damping = 0.5;
 };
 
 //---------------------------------------------------------------- operations
@@ -227,8 +231,9 @@ Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_
 void validateGenome(const Genome& genome, const GenomeLimits& limits);
 
 /// Current version of the byte format (2: a catapult's projectile after the brain; 3: chaotic
-/// joint controllers; 4: morphogene fields after the projectile). Readers accept this and older versions; a genome is written in the oldest
-/// version that carries it (1 without a projectile or a chaotic controller).
+/// joint controllers; 4: morphogene fields after the projectile). Readers accept this and older
+/// versions; a genome is written in the oldest version that carries it (1 without a projectile or a
+/// chaotic controller).
 constexpr std::uint32_t kGenomeFormatVersion = 4;
 
 /// The tag that starts the byte form.

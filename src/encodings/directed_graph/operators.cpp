@@ -101,6 +101,10 @@ class Perturber {
       number(p.restitution, limits_.min_restitution, limits_.max_restitution);
     vec3(p.anchor, -kPositionBound, kPositionBound);
     number(p.segment_shrink, limits_.min_shrink, limits_.max_shrink);
+    for (int k = 0; k < 3; ++k) {
+      if (p.joint_damping[k] != kWorldDamping)
+        number(p.joint_damping[k], limits_.min_joint_damping, limits_.max_joint_damping);
+    }
   }
 
   void connection(ConnectionGene& c) {

@@ -93,6 +93,8 @@ PartGene randomPartGene(const GenomeLimits& limits, Rng& rng) {
     for (int k = 0; k < 3; ++k)
       node.anchor[k] = rng.uniform(-kPositionBound, kPositionBound);
     node.segment_shrink = rng.uniform(limits.min_shrink, limits.max_shrink);
+    for (int k = 0; k < 3; ++k)
+      node.joint_damping[k] = rng.uniform(limits.min_joint_damping, limits.max_joint_damping);
   }
   return node;
 }

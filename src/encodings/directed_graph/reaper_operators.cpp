@@ -213,8 +213,7 @@ Genome crossSegments(const Genome& mother, const Genome& father, const GenomeLim
                      const ReaperOperatorSettings& settings, Rng& rng) {
   // the segments: mother's first..last (inclusive), father's first..end (exclusive)
   const std::size_t mother_first = rng.below(mother.nodes.size());
-  const std::size_t mother_last =
-      mother_first + rng.below(mother.nodes.size() - mother_first);
+  const std::size_t mother_last = mother_first + rng.below(mother.nodes.size() - mother_first);
   const std::size_t father_first = rng.below(father.nodes.size());
   const std::size_t father_end = father_first + rng.below(father.nodes.size() - father_first);
 

@@ -70,6 +70,12 @@ void fitNode(PartGene& node, const GenomeLimits& limits) {
   for (int k = 0; k < 3; ++k)
     node.anchor[k] = clampToRange(node.anchor[k], -kPositionBound, kPositionBound);
   node.segment_shrink = clampToRange(node.segment_shrink, limits.min_shrink, limits.max_shrink);
+  for (int k = 0; k < 3; ++k) {
+    if (node.joint_damping[k] != kWorldDamping) {
+      node.joint_damping[k] =
+          clampToRange(node.joint_damping[k], limits.min_joint_damping, limits.max_joint_damping);
+    }
+  }
   fitNeurons(node.neurons, limits.max_neurons_per_node, limits);
   truncate(node.effectors, kMaxEffectors);
   for (EffectorGene& effector : node.effectors)

@@ -140,6 +140,7 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
       w.f64(node.restitution);
       w.vec3(node.anchor);
       w.f64(node.segment_shrink);
+      w.vec3(node.joint_damping);
     }
     for (const ConnectionGene& c : genome.connections)
       w.u8(static_cast<std::uint8_t>((c.flip ? 1 : 0) | (c.mirror ? 2 : 0)));
@@ -234,6 +235,7 @@ Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
       node.restitution = r.f64();
       node.anchor = r.vec3();
       node.segment_shrink = r.f64();
+      node.joint_damping = r.vec3();
     }
     for (std::size_t i = 0; i < genome.connections.size(); ++i) {
       r.context("connection " + std::to_string(i) + " flip and mirror");

@@ -250,7 +250,7 @@ void parseNeuronFields(Line& line, NeuronGene& neuron) {
 }
 
 // node fields: shape, size, density, joint, limit, recursion, friction, restitution, anchor,
-// shrink
+// shrink, damping
 void parseNodeFields(Line& line, PartGene& node) {
   while (line.more()) {
     std::string_view key = line.next("node field", "a field");
@@ -275,10 +275,12 @@ void parseNodeFields(Line& line, PartGene& node) {
       node.anchor = line.vec3("anchor");
     } else if (key == "shrink") {
       node.segment_shrink = line.number("shrink");
+    } else if (key == "damping") {
+      node.joint_damping = line.vec3("damping");
     } else {
       line.fail("unknown node field '" + std::string(key) +
                 "' (shape, size, density, joint, limit, recursion, friction, restitution, "
-                "anchor, shrink)");
+                "anchor, shrink, damping)");
     }
   }
 }
@@ -409,6 +411,8 @@ std::string genomeToText(const Genome& genome) {
       out << " anchor " << vec3Text(node.anchor);
     if (node.segment_shrink != sims_part.segment_shrink)
       out << " shrink " << formatNumber(node.segment_shrink);
+    if (node.joint_damping != sims_part.joint_damping)
+      out << " damping " << vec3Text(node.joint_damping);
     out << "\n";
     for (const NeuronGene& neuron : node.neurons)
       writeNeuron(out, neuron);

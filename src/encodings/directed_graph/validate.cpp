@@ -105,6 +105,13 @@ void checkNode(std::size_t index, const PartGene& node, const GenomeLimits& limi
   }
   checkRange(where, "segment_shrink", node.segment_shrink, limits.min_shrink, "genome.min_shrink",
              limits.max_shrink, "genome.max_shrink");
+  for (int k = 0; k < 3; ++k) {
+    if (node.joint_damping[k] != kWorldDamping) {
+      checkRange(where, std::string("joint_damping.") + kAxes[k], node.joint_damping[k],
+                 limits.min_joint_damping, "genome.min_joint_damping", limits.max_joint_damping,
+                 "genome.max_joint_damping");
+    }
+  }
   checkCount(where, "neurons", node.neurons.size(), limits.max_neurons_per_node,
              "genome.max_neurons_per_node");
   for (std::size_t i = 0; i < node.neurons.size(); ++i) {
@@ -213,7 +220,8 @@ bool hasMorphogeneFields(const Genome& genome) {
   for (const PartGene& node : genome.nodes) {
     if (node.shape != sims_part.shape || node.friction != sims_part.friction ||
         node.restitution != sims_part.restitution || node.anchor != sims_part.anchor ||
-        node.segment_shrink != sims_part.segment_shrink)
+        node.segment_shrink != sims_part.segment_shrink ||
+        node.joint_damping != sims_part.joint_damping)
       return true;
   }
   for (const ConnectionGene& c : genome.connections) {

@@ -64,6 +64,7 @@ Genome morphogeneGenome() {
   PartGene leg = part({0.4, 0.1, 0.1});
   leg.anchor = {0.2, -1, 0.1};
   leg.friction = 1.6;
+  leg.joint_damping = {0.1, 0.2, 0.3};
   Genome genome;
   genome.nodes = {body, leg, part({0.3, 0.2, 0.2})};
   ConnectionGene hip = link(0, 1, {0.1, 1, 0.2});
@@ -88,6 +89,7 @@ TEST(Morphogenes, ACapsuleHasACapsulesMassAndThePartsMaterial) {
   EXPECT_EQ(capsule.material.friction, 0.6);
   EXPECT_EQ(capsule.material.restitution, 0.3);
   EXPECT_EQ(capsule.material.density, 900);
+  EXPECT_EQ(capsule.joint_damping, (Vec3{-1, -1, -1}));  // the world's
   // its tip (the default anchor, -x) touches the centre of the parent's +x face
   const Vec3 tip = apply(capsule.pose, {-0.25, 0, 0});
   expectNear(inParent(plan.parts[0], tip), {0.3, 0, 0});
@@ -147,13 +149,13 @@ TEST(Morphogenes, FlipAddsACopyTurnedAboutTheParentsAxis) {
   expectPlanConsistent(plan, GenomeLimits{});
 
   // on the parent's x axis a half turn about it would put the copy inside the first
-  const FlatPlan on_axis =
-      flatDevelop(parentAndChild(part({0.3, 0.1, 0.1}), [] {
-                    ConnectionGene end = link(0, 1, {1, 0, 0});
-                    end.flip = true;
-                    return end;
-                  }()),
-                  GenomeLimits{});
+  const FlatPlan on_axis = flatDevelop(parentAndChild(part({0.3, 0.1, 0.1}),
+                                                      [] {
+                                                        ConnectionGene end = link(0, 1, {1, 0, 0});
+                                                        end.flip = true;
+                                                        return end;
+                                                      }()),
+                                       GenomeLimits{});
   EXPECT_EQ(on_axis.parts.size(), 2u);
 }
 
@@ -209,13 +211,15 @@ TEST(Morphogenes, SegmentShrinkScalesEveryPartBranchedFromThePart) {
 
 TEST(Morphogenes, FieldsSurviveTheByteAndTextForms) {
   const Genome genome = morphogeneGenome();
+  const FlatPlan plan = flatDevelop(genome, GenomeLimits{});
+  EXPECT_EQ(plan.parts[1].joint_damping, (Vec3{0.1, 0.2, 0.3}));
   ASSERT_TRUE(hasMorphogeneFields(genome));
   const std::vector<std::uint8_t> bytes = serializeGenome(genome);
   EXPECT_EQ(bytes[4], 4);  // the version that carries them
   EXPECT_EQ(deserializeGenome(bytes.data(), bytes.size()), genome);
   const std::string text = genomeToText(genome);
   for (const char* word : {"shape capsule", "friction 0.7", "restitution 0.25", "anchor 0.2 -1 0.1",
-                           "shrink 0.5", "flip", "mirror"}) {
+                           "shrink 0.5", "damping 0.1 0.2 0.3", "flip", "mirror"}) {
     EXPECT_NE(text.find(word), std::string::npos) << word << " in\n" << text;
   }
   EXPECT_EQ(parseGenomeText(text), genome);
@@ -229,6 +233,7 @@ TEST(Morphogenes, FieldsSurviveTheByteAndTextForms) {
     node.restitution = defaults.restitution;
     node.anchor = defaults.anchor;
     node.segment_shrink = defaults.segment_shrink;
+    node.joint_damping = defaults.joint_damping;
   }
   sims.connections[0].flip = sims.connections[0].mirror = false;
   EXPECT_FALSE(hasMorphogeneFields(sims));
@@ -264,6 +269,9 @@ TEST(Morphogenes, ValidationNamesTheFieldAndItsSetting) {
   g.nodes[0].segment_shrink = 0.1;
   EXPECT_EQ(message(g), "node 0: segment_shrink = 0.1 is below genome.min_shrink 0.34");
   g = morphogeneGenome();
+  g.nodes[1].joint_damping.y = 0.9;
+  EXPECT_EQ(message(g), "node 1: joint_damping.y = 0.9 is above genome.max_joint_damping 0.5");
+  g = morphogeneGenome();
   g.nodes[0].shape = PartShape::sphere;
   EXPECT_NE(message(g).find("node 0: shape"), std::string::npos) << message(g);
 }
@@ -272,7 +280,7 @@ TEST(Morphogenes, RandomGenomesDrawThemOnlyWhenAskedAndStayValid) {
   GenomeLimits sims;
   GenomeLimits minemonics;
   minemonics.morphogenes = true;
-  int capsules = 0, flips = 0, mirrors = 0, anchored = 0, shrunk = 0, genomes_with = 0;
+  int capsules = 0, flips = 0, mirrors = 0, anchored = 0, shrunk = 0, damped = 0, genomes_with = 0;
   for (std::uint64_t individual = 0; individual < 300; ++individual) {
     const Genome plain = randomGenome(sims, 7, 0, individual);
     EXPECT_FALSE(hasMorphogeneFields(plain)) << individual;
@@ -283,6 +291,7 @@ TEST(Morphogenes, RandomGenomesDrawThemOnlyWhenAskedAndStayValid) {
       capsules += node.shape == PartShape::capsule;
       anchored += node.anchor != PartGene{}.anchor;
       shrunk += node.segment_shrink != 1;
+      damped += node.joint_damping.x >= minemonics.min_joint_damping;
       EXPECT_GE(node.friction, minemonics.min_friction);
       EXPECT_LE(node.friction, minemonics.max_friction);
     }
@@ -299,6 +308,7 @@ TEST(Morphogenes, RandomGenomesDrawThemOnlyWhenAskedAndStayValid) {
   EXPECT_GT(mirrors, 50);
   EXPECT_GT(anchored, 200);
   EXPECT_GT(shrunk, 200);
+  EXPECT_EQ(damped, shrunk);
 }
 
 TEST(Morphogenes, MutationChangesThemOnlyWhenAskedAndKeepsThemInRange) {
