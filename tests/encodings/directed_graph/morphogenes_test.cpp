@@ -160,36 +160,39 @@ TEST(Morphogenes, FlipAddsACopyTurnedAboutTheParentsAxis) {
 }
 
 TEST(Morphogenes, MirrorAddsTheMirrorImageThroughTheParentsCentre) {
-  PartGene leg = part({0.3, 0.1, 0.15});
-  leg.anchor = {-1, 0.3, 0};
-  ConnectionGene c = link(0, 1, {0.4, 1, 0.5});
-  c.mirror = true;
-  c.orientation = {0.3, -0.2, 0.5};
-  const FlatPlan plan = flatDevelop(parentAndChild(leg, c), GenomeLimits{});
-  ASSERT_EQ(plan.parts.size(), 3u);
-  const PartPlan &original = plan.parts[1], &image = plan.parts[2];
-  EXPECT_TRUE(image.reflected);
-  expectNear(inParent(plan.parts[0], image.pose.position),
-             inParent(plan.parts[0], original.pose.position) * -1.0);
-  // every point of the copy is the mirror image of one of the original: corners map to corners
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 local{(corner & 1 ? 0.15 : -0.15), (corner & 2 ? 0.05 : -0.05),
-                     (corner & 4 ? 0.075 : -0.075)};
-    const Vec3 p = inParent(plan.parts[0], apply(original.pose, local)) * -1.0;
-    bool found = false;
-    for (int other = 0; other < 8; ++other) {
-      const Vec3 q{(other & 1 ? 0.15 : -0.15), (other & 2 ? 0.05 : -0.05),
-                   (other & 4 ? 0.075 : -0.075)};
-      found = found || norm(inParent(plan.parts[0], apply(image.pose, q)) - p) < 1e-12;
+  // an anchor on the leg's own -x face, and one on its -y face (the leg turned to face the body)
+  for (const Vec3 anchor : {Vec3{-1, 0.3, 0}, Vec3{0.3, -1, 0.2}}) {
+    PartGene leg = part({0.3, 0.1, 0.15});
+    leg.anchor = anchor;
+    ConnectionGene c = link(0, 1, {0.4, 1, 0.5});
+    c.mirror = true;
+    c.orientation = {0.3, -0.2, 0.5};
+    const FlatPlan plan = flatDevelop(parentAndChild(leg, c), GenomeLimits{});
+    ASSERT_EQ(plan.parts.size(), 3u);
+    const PartPlan &original = plan.parts[1], &image = plan.parts[2];
+    EXPECT_TRUE(image.reflected);
+    expectNear(inParent(plan.parts[0], image.pose.position),
+               inParent(plan.parts[0], original.pose.position) * -1.0);
+    // every point of the copy is the mirror image of one of the original: corners map to corners
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 local{(corner & 1 ? 0.15 : -0.15), (corner & 2 ? 0.05 : -0.05),
+                       (corner & 4 ? 0.075 : -0.075)};
+      const Vec3 p = inParent(plan.parts[0], apply(original.pose, local)) * -1.0;
+      bool found = false;
+      for (int other = 0; other < 8; ++other) {
+        const Vec3 q{(other & 1 ? 0.15 : -0.15), (other & 2 ? 0.05 : -0.05),
+                     (other & 4 ? 0.075 : -0.075)};
+        found = found || norm(inParent(plan.parts[0], apply(image.pose, q)) - p) < 1e-12;
+      }
+      EXPECT_TRUE(found) << "corner " << corner;
     }
-    EXPECT_TRUE(found) << "corner " << corner;
+    // the same command turns the copy the mirrored way (joint axes are pseudovectors)
+    for (int d = 0; d < 3; ++d) {
+      const Vec3 a = rotate(original.parent_to_child, original.axes[d]);
+      expectNear(rotate(image.parent_to_child, image.axes[d]), a);
+    }
+    expectPlanConsistent(plan, GenomeLimits{});
   }
-  // the same command turns the copy the mirrored way (joint axes are pseudovectors)
-  for (int d = 0; d < 3; ++d) {
-    const Vec3 a = rotate(original.parent_to_child, original.axes[d]);
-    expectNear(rotate(image.parent_to_child, image.axes[d]), a);
-  }
-  expectPlanConsistent(plan, GenomeLimits{});
 }
 
 TEST(Morphogenes, SegmentShrinkScalesEveryPartBranchedFromThePart) {
