@@ -61,6 +61,23 @@ std::array<btVector3, 3> eulerAxes(const btGeneric6DofSpring2Constraint& joint) 
   return {first, middle, last};
 }
 
+// The dual of Euler axis `dof` (d . a_k / volume = 1 when k = dof, else 0), and the volume of
+// the three axes (1 at gimbal lock, where the dual is the Euler axis itself). The relative
+// angular velocity dotted with d / volume is the coordinate's rate, and a torque u along
+// d / volume is the generalised force u on that coordinate alone, a Featherstone joint torque
+// (along the Euler axis the torque would push the other coordinates too once the joint is bent).
+struct DualAxis {
+  btVector3 axis;
+  double volume = 1;
+};
+DualAxis dualAxis(const btGeneric6DofSpring2Constraint& joint, int dof) {
+  const auto [a0, a1, a2] = eulerAxes(joint);
+  const double volume = a0.dot(a1.cross(a2));
+  if (std::abs(volume) < 1e-9)
+    return {dof == 0 ? a0 : dof == 1 ? a1 : a2, 1};
+  return {dof == 0 ? a1.cross(a2) : dof == 1 ? a2.cross(a0) : a0.cross(a1), volume};
+}
+
 // constraint axis index (Bullet: 0-2 linear, 3-5 angular) of degree of freedom `dof`
 int constraintAxis(JointType joint, int dof) {
   return joint == JointType::prismatic ? dof : 3 + dof;
@@ -302,18 +319,21 @@ void RigidBodyWorld::applyTorques(std::span<const double> commands) {
   RigidBodyObjects& b = *bullet_;
   const bool explicit_damping = !physics_.implicit_damping;
   const bool torques = physics_.actuation == Actuation::torque && !commands.empty();
-  // a torque (prismatic: force) along a joint's axis, on the child and against the parent
+  // a generalised force on one joint coordinate, on the child and against the parent: a force
+  // along a slider's axis, a torque along the dual of a turning coordinate's Euler axis
   auto push = [&](int part, int dof, double amount) {
     const PartPlan& plan = plan_.parts[static_cast<std::size_t>(part)];
-    const btVector3 axis = toBt(jointAxis(part, dof));
     btRigidBody& child = *b.parts[static_cast<std::size_t>(part)];
     btRigidBody& parent = *b.parts[static_cast<std::size_t>(plan.parent)];
     if (plan.joint == JointType::prismatic) {
+      const btVector3 axis = toBt(jointAxis(part, dof));
       child.applyCentralForce(amount * axis);
       parent.applyCentralForce(-amount * axis);
     } else {
-      child.applyTorque(amount * axis);
-      parent.applyTorque(-amount * axis);
+      const DualAxis dual = dualAxis(*b.joints[static_cast<std::size_t>(part)], dof);
+      const btVector3 torque = amount / dual.volume * dual.axis;
+      child.applyTorque(torque);
+      parent.applyTorque(-torque);
     }
   };
   if (explicit_damping) {
@@ -396,12 +416,8 @@ double RigidBodyWorld::jointSpeed(int part, int dof) const {
     return relative.dot(joint.getCalculatedTransformA().getBasis().getColumn(0));
   }
   const btVector3 spin = child.getAngularVelocity() - parent.getAngularVelocity();
-  const auto [a0, a1, a2] = eulerAxes(joint);
-  const double volume = a0.dot(a1.cross(a2));
-  if (std::abs(volume) < 1e-9)
-    return spin.dot(dof == 0 ? a0 : dof == 1 ? a1 : a2);
-  const btVector3 dual = dof == 0 ? a1.cross(a2) : dof == 1 ? a2.cross(a0) : a0.cross(a1);
-  return spin.dot(dual) / volume;
+  const DualAxis dual = dualAxis(joint, dof);
+  return spin.dot(dual.axis) / dual.volume;
 }
 
 double RigidBodyWorld::jointPosition(int part, int dof) const {
