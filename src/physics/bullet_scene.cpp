@@ -139,8 +139,8 @@ Vec3 directionIn(const btCollisionObject& body, Vec3 point) {
   return fromBt(to_point);
 }
 
-void anchorFriction(btCollisionObject& object, const PhysicsSettings& physics) {
-  if (physics.friction_anchors)
+void anchorFriction(btCollisionObject& object, PartShape shape, const PhysicsSettings& physics) {
+  if (physics.friction_anchors && shape == PartShape::box)
     object.setCollisionFlags(object.getCollisionFlags() |
                              btCollisionObject::CF_HAS_FRICTION_ANCHOR);
 }
@@ -152,7 +152,6 @@ void BulletGround::add(btCollisionWorld& into, const Environment& environment,
   plane.setFriction(environment.ground.friction);
   plane.setRestitution(environment.ground.restitution);
   plane.setUserIndex(kGroundIndex);
-  anchorFriction(plane, physics);
   if (environment.ground.kind == Ground::Kind::heightfield) {
     // the terrain, and the plane under its lowest point to catch what leaves it
     const Heightfield& field = environment.ground.heightfield;
@@ -168,7 +167,6 @@ void BulletGround::add(btCollisionWorld& into, const Environment& environment,
     terrain.setFriction(environment.ground.friction);
     terrain.setRestitution(environment.ground.restitution);
     terrain.setUserIndex(kGroundIndex);
-    anchorFriction(terrain, physics);
     into.addCollisionObject(&terrain, btBroadphaseProxy::StaticFilter,
                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     has_terrain = true;
@@ -202,7 +200,7 @@ btRigidBody& FreeBodies::add(PartShape shape_kind, Vec3 size, double mass, const
   bodies.push_back(std::make_unique<btRigidBody>(info));
   btRigidBody& body = *bodies.back();
   body.setUserIndex(objectIndex(static_cast<int>(bodies.size() - 1)));
-  anchorFriction(body, physics);
+  anchorFriction(body, shape_kind, physics);
   return body;
 }
 

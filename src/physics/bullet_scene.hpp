@@ -53,8 +53,11 @@ btDefaultCollisionConstructionInfo creaturePools();
 void setSolverInfo(btContactSolverInfo& solver, const PhysicsSettings& physics);
 /// At least the highest ground z under the parts' bounding boxes at their plan poses (hills).
 double highestGroundUnder(const Environment& environment, const std::vector<PartPlan>& parts);
-/// Sets Bullet's friction anchors on `object` when physics.friction_anchors.
-void anchorFriction(btCollisionObject& object, const PhysicsSettings& physics);
+/// Sets Bullet's friction anchors on `object`, of `shape`, when physics.friction_anchors and it
+/// is a box. Bullet anchors a contact when either body asks, so the ground does not: a box's
+/// contacts with the ground are anchored, a rolling capsule's or sphere's are not (an anchor
+/// holds the contact where it was on a surface that rolls on, and pumps energy into the roll).
+void anchorFriction(btCollisionObject& object, PartShape shape, const PhysicsSettings& physics);
 
 /// Where the root part is born: at its plan position, raised so the body's lowest point is
 /// `birth_height` m above z = 0 (on hills, above the highest ground under the body).

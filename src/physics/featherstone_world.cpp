@@ -590,7 +590,7 @@ void FeatherstoneWorld::build(double birth_height) {
     collider->setFriction(part.material.friction);
     collider->setRestitution(part.material.restitution < 0 ? physics_.restitution
                                                            : part.material.restitution);
-    anchorFriction(*collider, physics_);
+    anchorFriction(*collider, part.shape, physics_);
     if (i == 0) {
       body.setBaseCollider(collider.get());
     } else {

@@ -196,7 +196,7 @@ void RigidBodyWorld::build(double birth_height) {
     b.parts.push_back(std::make_unique<PartBody>(info, i, &b.self_contacts));
     PartBody& body = *b.parts.back();
     body.setActivationState(DISABLE_DEACTIVATION);
-    anchorFriction(body, physics_);
+    anchorFriction(body, part.shape, physics_);
     b.world.addRigidBody(&body);
     max_torque_[i] = physics_.strength_per_area * part.cross_section;
   }

@@ -7,6 +7,7 @@
 #include "cambrian/error.hpp"
 
 #include "encodings/directed_graph/encoding.hpp"
+#include "physics/physics_audit.hpp"
 #include "physics/physics_settings.hpp"
 #include "tasks/episode.hpp"
 
@@ -389,6 +390,26 @@ TEST(Evaluate, JointCorrectionEnergyIsCaughtInTheRigidBodyWorld) {
       pump, settingsWith({{"physics.world", "rigid_bodies"}, {"physics.joint_erp", "0.02"}}));
   ASSERT_EQ(softer.status, EvalStatus::ok) << softer.message;
   EXPECT_GT(softer.measure("distance"), 0.5);
+}
+
+// two spheres held together, a random Minemonics body: while the ground asked Bullet for friction
+// anchors (every contact with it anchored where it began) the passive body gained 175 J and
+// rolled 2.8 m away from rest in both worlds; a box's contacts are still anchored, a capsule's or
+// sphere's no longer, and it rests
+TEST(Evaluate, ARollingBodyGainsNoEnergyFromFrictionAnchors) {
+  const Genome spheres = graph::graphGenome(readGenomeFile(
+      std::string(CAMBRIAN_SOURCE_DIR) + "/tests/tasks/data/rolling_spheres.genome"));
+  const Creature creature = graph::develop(spheres, graph::GenomeLimits{});
+  for (const char* world : {"featherstone", "rigid_bodies"}) {
+    PhysicsSettings physics;
+    physics.world = world;
+    physics.time_step = 1.0 / 240;
+    const RestAudit audit = auditRest(creature.body, Environment{}, physics, AuditSettings{});
+    ASSERT_EQ(audit.status, EvalStatus::ok) << world << ": " << audit.message;
+    EXPECT_TRUE(audit.at_rest) << world;
+    EXPECT_LT(audit.creep, 0.001) << world;
+    EXPECT_LT(audit.unexplained, 0.01 * audit.energy_scale) << world;
+  }
 }
 
 // a three-part creature evolved with self-collision on under the earlier physics: its motor
