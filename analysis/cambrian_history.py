@@ -140,8 +140,26 @@ def open_hdf5(path):
     return _open_hdf5_here(path)
 
 
+# opens of a file shorter than its header says, made again: a writer extending it between
+# generations has not written its end yet (a file truncated for good still fails, 2.75 s later)
+TRUNCATED_RETRIES = 10
+
+
 def _open_hdf5_here(path):
     """open_hdf5 without the probe."""
+    for attempt in range(TRUNCATED_RETRIES + 1):
+        try:
+            return _open_hdf5_once(path)
+        except FileNotFoundError:
+            raise
+        except OSError as error:
+            if "truncated file" not in str(error) or attempt == TRUNCATED_RETRIES:
+                raise
+            time.sleep(0.05 * (attempt + 1))
+
+
+def _open_hdf5_once(path):
+    """The file opened plainly, else for SWMR reading (a writer holds it)."""
     try:
         return h5py.File(path, "r")
     except FileNotFoundError:
