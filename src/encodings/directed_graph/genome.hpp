@@ -14,6 +14,7 @@
 #include "brain/sine_oscillators.hpp"
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -266,8 +267,17 @@ int dominantAxis(Vec3 position);
 /// network, plus the joint oscillators when any connection enables one.
 Creature develop(const Genome& genome, const GenomeLimits& limits);
 
-/// Whether any gene holds a morphogene field (a capsule among them) other than its default.
+/// Whether any gene holds a morphogene field (a capsule among them) other than its default, bit
+/// for bit (a -0 counts), so that the forms that leave defaults out lose nothing.
 bool hasMorphogeneFields(const Genome& genome);
+/// Whether `a` and `b` have the same bits.
+inline bool sameBits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+/// Whether every component of `a` and `b` has the same bits.
+inline bool sameBits(Vec3 a, Vec3 b) {
+  return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z);
+}
 
 /// The directed-graph genome held by a genotype (GenomeError when it is of another encoding).
 const Genome& graphGenome(const Genotype& genotype);

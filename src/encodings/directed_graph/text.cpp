@@ -403,15 +403,15 @@ std::string genomeToText(const Genome& genome) {
         << static_cast<int>(node.recursive_limit);
     // the morphogene fields that differ from Sims' boxes
     const PartGene sims_part;
-    if (node.friction != sims_part.friction)
+    if (!sameBits(node.friction, sims_part.friction))
       out << " friction " << formatNumber(node.friction);
-    if (node.restitution != sims_part.restitution)
+    if (!sameBits(node.restitution, sims_part.restitution))
       out << " restitution " << formatNumber(node.restitution);
-    if (node.anchor != sims_part.anchor)
+    if (!sameBits(node.anchor, sims_part.anchor))
       out << " anchor " << vec3Text(node.anchor);
-    if (node.segment_shrink != sims_part.segment_shrink)
+    if (!sameBits(node.segment_shrink, sims_part.segment_shrink))
       out << " shrink " << formatNumber(node.segment_shrink);
-    if (node.joint_damping != sims_part.joint_damping)
+    if (!sameBits(node.joint_damping, sims_part.joint_damping))
       out << " damping " << vec3Text(node.joint_damping);
     out << "\n";
     for (const NeuronGene& neuron : node.neurons)

@@ -218,10 +218,11 @@ void validateGenome(const Genome& genome, const GenomeLimits& limits) {
 bool hasMorphogeneFields(const Genome& genome) {
   const PartGene sims_part;
   for (const PartGene& node : genome.nodes) {
-    if (node.shape != sims_part.shape || node.friction != sims_part.friction ||
-        node.restitution != sims_part.restitution || node.anchor != sims_part.anchor ||
-        node.segment_shrink != sims_part.segment_shrink ||
-        node.joint_damping != sims_part.joint_damping)
+    if (node.shape != sims_part.shape || !sameBits(node.friction, sims_part.friction) ||
+        !sameBits(node.restitution, sims_part.restitution) ||
+        !sameBits(node.anchor, sims_part.anchor) ||
+        !sameBits(node.segment_shrink, sims_part.segment_shrink) ||
+        !sameBits(node.joint_damping, sims_part.joint_damping))
       return true;
   }
   for (const ConnectionGene& c : genome.connections) {
