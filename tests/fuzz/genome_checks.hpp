@@ -36,7 +36,12 @@ inline std::size_t firstDifference(const std::vector<std::uint8_t>& a,
 /// The checks above on an accepted genome.
 inline void checkAcceptedGenome(const Genotype& genome) {
   const Encoding& encoding = genome.encoding();
-  require(encoding.toBytes(genome.data()) == genome.bytes(), "written again, the same bytes");
+  std::vector<std::uint8_t> written = encoding.toBytes(genome.data());
+  if (written != genome.bytes()) {
+    std::fprintf(stderr, "fuzz: read %zu bytes, written again %zu, first difference at byte %zu\n",
+                 genome.bytes().size(), written.size(), firstDifference(written, genome.bytes()));
+  }
+  require(written == genome.bytes(), "written again, the same bytes");
   std::string text = encoding.toText(genome);
   Genotype again = encoding.fromText(text, "text form");
   if (!(again == genome) && text.find("nan") == std::string::npos) {

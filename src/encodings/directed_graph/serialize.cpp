@@ -65,6 +65,15 @@ std::vector<NeuronGene> readNeurons(Reader& r, const std::string& where) {
   return neurons;
 }
 
+// The oldest version that carries the genome (1 without a projectile, so that every other
+// genome keeps its bytes): the writer's choice, and the only version the reader accepts for it
+std::uint32_t oldestVersionCarrying(const Genome& genome) {
+  const bool chaotic = std::any_of(
+      genome.connections.begin(), genome.connections.end(),
+      [](const ConnectionGene& c) { return c.controller.kind == JointControllerKind::chaotic; });
+  return hasMorphogeneFields(genome) ? 4 : chaotic ? 3 : genome.projectile ? 2 : 1;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
@@ -73,13 +82,7 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
 
   // header: tag and version
   w.raw(kGenomeTag.data(), kGenomeTag.size());
-  // the oldest version that carries the genome: 1 without a projectile, so that every other
-  // genome keeps its bytes
-  const bool chaotic = std::any_of(
-      genome.connections.begin(), genome.connections.end(),
-      [](const ConnectionGene& c) { return c.controller.kind == JointControllerKind::chaotic; });
-  const bool morphogenes = hasMorphogeneFields(genome);
-  const std::uint32_t version = morphogenes ? 4 : chaotic ? 3 : genome.projectile ? 2 : 1;
+  const std::uint32_t version = oldestVersionCarrying(genome);
   w.u32(version);
 
   // nodes
@@ -246,6 +249,15 @@ Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
   }
   r.context("end");
   r.expectEnd();
+  // one genome, one byte string: a capsule in version 1 bytes, or version 4 bytes with nothing
+  // past version 1 in them, would be written again otherwise
+  const std::uint32_t needed = oldestVersionCarrying(genome);
+  if (needed != version) {
+    throw InputError("genome bytes: format version " + std::to_string(version) +
+                     ", but this genome is written as version " + std::to_string(needed) +
+                     (needed > version ? " (a field its version cannot carry)"
+                                       : " (nothing in it needs a later version)"));
+  }
   return genome;
 }
 

@@ -248,5 +248,40 @@ TEST(Serialize, ChaoticControllersTravelInVersion3) {
       << failure(bytes);
 }
 
+// one genome, one byte string: the reader accepts only the version the writer picks (the oldest
+// that carries the genome), so a genome read is written again to the same bytes
+TEST(Serialize, OnlyTheOldestVersionThatCarriesAGenomeIsRead) {
+  Genome g;
+  g.nodes.resize(1);
+  g.connections.resize(1);
+  std::vector<std::uint8_t> bytes = serializeGenome(g);
+  ASSERT_EQ(bytes[4], 1);
+  // a capsule in version 1 bytes: its version cannot carry it
+  const std::size_t shape = 8 + 4;
+  bytes[shape] = static_cast<std::uint8_t>(PartShape::capsule);
+  EXPECT_NE(failure(bytes).find("format version 1, but this genome is written as version 4"),
+            std::string::npos)
+      << failure(bytes);
+  // version 4 bytes whose morphogene fields are all defaults: nothing needs version 4
+  Genome defaults = g;
+  defaults.connections[0].flip = true;
+  bytes = serializeGenome(defaults);
+  ASSERT_EQ(bytes[4], 4);
+  bytes.back() = 0;  // the connection's flip and mirror byte
+  EXPECT_NE(failure(bytes).find("format version 4, but this genome is written as version 1"),
+            std::string::npos)
+      << failure(bytes);
+  // version 2 bytes without a projectile
+  Genome catapult = randomGenome(catapultLimits(), 3);
+  ASSERT_TRUE(catapult.projectile.has_value());
+  catapult.projectile.reset();
+  bytes = serializeGenome(catapult);
+  ASSERT_EQ(bytes[4], 1);
+  bytes[4] = 2;
+  bytes.push_back(0);  // "no projectile"
+  EXPECT_NE(failure(bytes).find("nothing in it needs a later version"), std::string::npos)
+      << failure(bytes);
+}
+
 }  // namespace
 }  // namespace cambrian::graph
