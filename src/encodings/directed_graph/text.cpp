@@ -2,6 +2,7 @@
 #include "cambrian/error.hpp"
 
 #include "core/number_text.hpp"
+#include "core/text_line.hpp"
 #include "encodings/directed_graph/gene_ranges.hpp"
 #include "encodings/directed_graph/genome.hpp"
 
@@ -99,118 +100,7 @@ void writeNeuron(std::ostringstream& out, const NeuronGene& neuron) {
 
 //---------------------------------------------------------------- parsing
 
-// the statement being parsed: one line split into tokens, with its place for messages
-class Line {
- public:
-  Line(const std::string& source, int number, std::vector<std::string_view> tokens)
-      : source_(source), number_(number), tokens_(std::move(tokens)) {}
-
-  void context(std::string where) { where_ = std::move(where); }
-  bool more() const { return pos_ < tokens_.size(); }
-  std::string_view peek() const { return tokens_[pos_]; }
-
-  [[noreturn]] void fail(const std::string& what) const {
-    std::string prefix = source_ + ":" + std::to_string(number_) + ": ";
-    if (!where_.empty())
-      prefix += where_ + ": ";
-    throw InputError(prefix + what);
-  }
-
-  // the next token, which `field` needs
-  std::string_view next(const std::string& field, const char* kind) {
-    if (!more())
-      fail("expected " + std::string(kind) + " for '" + field + "', got end of line");
-    return tokens_[pos_++];
-  }
-
-  double number(const std::string& field) {
-    std::string_view token = next(field, "a number");
-    std::string_view digits = token;
-    if (!digits.empty() && digits.front() == '+')
-      digits.remove_prefix(1);
-    double value = 0;
-    auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (digits.empty() || result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
-      fail("expected a number for '" + field + "', got '" + std::string(token) + "'");
-    }
-    return value;
-  }
-
-  Vec3 vec3(const std::string& field) {
-    Vec3 v;
-    for (int k = 0; k < 3; ++k)
-      v[k] = number(field);
-    return v;
-  }
-
-  long long integer(const std::string& field, long long lo, long long hi) {
-    std::string_view token = next(field, "an integer");
-    long long value = 0;
-    auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (result.ec != std::errc() || result.ptr != token.data() + token.size() || value < lo ||
-        value > hi) {
-      fail("expected an integer " + std::to_string(lo) + ".." + std::to_string(hi) + " for '" +
-           field + "', got '" + std::string(token) + "'");
-    }
-    return value;
-  }
-
-  // an enumeration by name (or by its number, 0..255), listing the names on error
-  int enumeration(const std::string& field, const char* const* names, int count) {
-    std::string_view token = next(field, "a name");
-    for (int i = 0; i < count; ++i) {
-      if (token == names[i])
-        return i;
-    }
-    long long value = 0;
-    auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (result.ec == std::errc() && result.ptr == token.data() + token.size() && value >= 0 &&
-        value <= 255) {
-      return static_cast<int>(value);
-    }
-    std::string known;
-    for (int i = 0; i < count; ++i)
-      known += (i ? ", " : "") + std::string(names[i]);
-    fail("unknown value '" + std::string(token) + "' for '" + field + "' (one of: " + known + ")");
-  }
-
-  void expect(std::string_view word, const std::string& field) {
-    std::string_view token = next(field, ("'" + std::string(word) + "'").c_str());
-    if (token != word) {
-      fail("expected '" + std::string(word) + "' in '" + field + "', got '" + std::string(token) +
-           "'");
-    }
-  }
-
- private:
-  const std::string& source_;
-  int number_;
-  std::vector<std::string_view> tokens_;
-  std::size_t pos_ = 0;
-  std::string where_;
-};
-
-// whitespace-separated tokens of one line, stopping at '#'
-std::vector<std::string_view> tokenize(std::string_view line) {
-  std::vector<std::string_view> tokens;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    char c = line[i];
-    if (c == '#')
-      break;
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f') {
-      ++i;
-      continue;
-    }
-    std::size_t start = i;
-    while (i < line.size() && line[i] != '#' && line[i] != ' ' && line[i] != '\t' &&
-           line[i] != '\r' && line[i] != '\v' && line[i] != '\f') {
-      ++i;
-    }
-    tokens.push_back(line.substr(start, i - start));
-  }
-  return tokens;
-}
+using Line = TextLine;
 
 NeuronFunction parseFunction(Line& line) {
   std::vector<const char*> names;
@@ -489,7 +379,7 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
     std::string_view raw(text.data() + start, end - start);
     start = end + 1;
     ++line_number;
-    Line line(source, line_number, tokenize(raw));
+    Line line(source, line_number, tokenizeLine(raw));
     if (!line.more())
       continue;
     std::string keyword(line.next("statement", "a keyword"));
@@ -585,7 +475,7 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
       line.context(where.empty() ? keyword : where);
       if (last_neuron == nullptr)
         line.fail("'" + keyword + "' must follow a neuron line");
-      Line rest(source, line_number, tokenize(raw));
+      Line rest(source, line_number, tokenizeLine(raw));
       rest.context(where + ": neuron");
       parseNeuronFields(rest, *last_neuron);
     } else if (keyword == "effector") {
@@ -625,7 +515,7 @@ Genome parseGenomeText(const std::string& text, const std::string& source) {
     } else {
       // more fields of the current node or connection
       line.context(where.empty() ? std::string("genome") : where);
-      Line rest(source, line_number, tokenize(raw));
+      Line rest(source, line_number, tokenizeLine(raw));
       rest.context(where);
       if (section == Section::node) {
         parseNodeFields(rest, genome.nodes.back());
