@@ -11,6 +11,28 @@
 
 namespace cambrian {
 
+namespace {
+
+// the selection method a mutation_selection other than `same` names
+SelectionMethod selectionMethodOf(MutationSelection choice) {
+  switch (choice) {
+    case MutationSelection::truncation:
+      return SelectionMethod::truncation;
+    case MutationSelection::tournament:
+      return SelectionMethod::tournament;
+    case MutationSelection::roulette:
+      return SelectionMethod::roulette;
+    case MutationSelection::sus:
+      return SelectionMethod::sus;
+    case MutationSelection::rank:
+    case MutationSelection::same:
+      break;
+  }
+  return SelectionMethod::rank;
+}
+
+}  // namespace
+
 BreedingPlan planBreeding(const EvolutionSettings& s) {
   // elites first, then the offspring shares of the rest
   BreedingPlan plan;
@@ -120,12 +142,25 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     next.individuals.push_back(
         eliteCopy(evaluated.individuals[ranking[static_cast<std::size_t>(e)]], g));
 
-  // every parent pick of the generation in one stream: (seed, selection, g, 0)
-  auto picks_needed =
-      static_cast<std::size_t>(plan_.mutations + 2 * plan_.crossovers + 2 * plan_.grafts);
-  Rng selection_rng(settings_.seed, RngPurpose::selection, g, 0);
-  std::vector<std::size_t> picks =
-      selectParents(ranked_fitness, picks_needed, settings_.selection, selection_rng);
+  // every parent pick of the generation in one stream: (seed, selection, g, 0); with a method
+  // of their own the mutation parents are drawn first from (seed, selection, g, 1)
+  const auto mutation_picks = static_cast<std::size_t>(plan_.mutations);
+  const auto sexual_picks = static_cast<std::size_t>(2 * plan_.crossovers + 2 * plan_.grafts);
+  std::vector<std::size_t> picks;
+  if (settings_.mutation_selection == MutationSelection::same) {
+    Rng selection_rng(settings_.seed, RngPurpose::selection, g, 0);
+    picks = selectParents(ranked_fitness, mutation_picks + sexual_picks, settings_.selection,
+                          selection_rng);
+  } else {
+    SelectionSettings own = settings_.selection;
+    own.method = selectionMethodOf(settings_.mutation_selection);
+    Rng mutation_rng(settings_.seed, RngPurpose::selection, g, 1);
+    picks = selectParents(ranked_fitness, mutation_picks, own, mutation_rng);
+    Rng sexual_rng(settings_.seed, RngPurpose::selection, g, 0);
+    const std::vector<std::size_t> sexual =
+        selectParents(ranked_fitness, sexual_picks, settings_.selection, sexual_rng);
+    picks.insert(picks.end(), sexual.begin(), sexual.end());
+  }
   std::size_t next_pick = 0;
   auto pickParent = [&]() -> const Individual& {
     return evaluated.individuals[ranking[picks[next_pick++]]];

@@ -122,6 +122,16 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
                {"sus", SelectionMethod::sus},
                {"rank", SelectionMethod::rank}},
               "parent selection: truncation | tournament | roulette | sus | rank");
+  s.addChoice("evolution.mutation_selection", e.mutation_selection,
+              {{"same", MutationSelection::same},
+               {"truncation", MutationSelection::truncation},
+               {"tournament", MutationSelection::tournament},
+               {"roulette", MutationSelection::roulette},
+               {"sus", MutationSelection::sus},
+               {"rank", MutationSelection::rank}},
+              "how the parents of mutation are drawn: same (as evolution.selection, in one "
+              "draw with the crossover and graft parents) | truncation | tournament | roulette | "
+              "sus | rank (with evolution.selection's parameters)");
   SelectionSettings& sel = e.selection;
   s.add("evolution.truncation_fraction", sel.truncation_fraction,
         "truncation: share of the best that may be parents")

@@ -32,6 +32,11 @@ struct SelectionSettings {
   double rank_pressure = 1.7;        ///< expected offspring of the best under linear ranking
 };
 
+/// How the generational scheme draws the parents it mutates (evolution.mutation_selection): with
+/// the crossover and graft parents by evolution.selection (`same`), or by a method of their own
+/// (the springy organisms' Algorithm 3.1 has S_mut beside S_cross).
+enum class MutationSelection : std::uint8_t { same, truncation, tournament, roulette, sus, rank };
+
 /// How each generation is bred from the last (evolution.scheme).
 enum class BreedingScheme : std::uint8_t {
   generational,  ///< Sims / Chaumont: elites, then mutation, crossover and graft offspring
@@ -82,6 +87,8 @@ struct EvolutionSettings {
       0.1;                                     ///< chance an offspring of crossover / graft mutates
   double post_crossover_mutation_rate = 0.05;  ///< per-parameter rate of that mutation
   SelectionSettings selection;
+  /// the mutation parents' method; its parameters are evolution.selection's
+  MutationSelection mutation_selection = MutationSelection::same;
   std::vector<std::string> seed_genomes;  ///< genome files the first generation starts from
   /// Minemonics' competitive ranking: measures as NAME[:WEIGHT[:higher|lower]]; when given, a
   /// generation's fitness is each individual's weighted rank points (competitive_ranking.hpp)

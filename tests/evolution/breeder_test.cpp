@@ -253,6 +253,48 @@ TEST(Breeder, IdsAreUniqueAndIncreaseAcrossTheRun) {
   }
 }
 
+// Algorithm 3.1 of the springy organisms: the mutation parents by a method of their own. Here
+// crossover and graft parents come from the best 20 % (truncation) and the mutation parents by
+// roulette, so some mutation parent ranks below the best 20 %; `same` draws them all at once
+TEST(Breeder, MutationParentsCanHaveASelectionOfTheirOwn) {
+  EvolutionSettings s = smallRun();
+  s.population = 50;
+  s.mutation_selection = MutationSelection::roulette;
+  Breeder breeder(s, kEncoding);
+  Population first = breeder.initialPopulation();
+  fill(first, indices(first.individuals.size(), false));
+  const std::vector<std::size_t> ranking = first.ranking();
+  std::set<std::uint64_t> best;
+  for (std::size_t r = 0; r < 10; ++r)
+    best.insert(first.individuals[ranking[r]].id);
+  Population second = breeder.nextGeneration(first);
+  int mutation_parents_below = 0;
+  for (const Individual& child : second.individuals) {
+    if (child.origin == Origin::crossover || child.origin == Origin::graft) {
+      for (std::uint64_t parent : child.parents)
+        EXPECT_TRUE(best.count(parent)) << "a sexual parent outside the best 20 %";
+    } else if (child.origin == Origin::mutation) {
+      mutation_parents_below += best.count(child.parents[0]) == 0;
+    }
+  }
+  EXPECT_GT(mutation_parents_below, 0);
+  // `same` (the default) and a method of their own breed differently, each reproducibly
+  EvolutionSettings same = s;
+  same.mutation_selection = MutationSelection::same;
+  Breeder again(s, kEncoding), other(same, kEncoding);
+  Population a = again.initialPopulation(), b = other.initialPopulation();
+  fill(a, indices(a.individuals.size(), false));
+  fill(b, indices(b.individuals.size(), false));
+  const Population next_a = again.nextGeneration(a), next_b = other.nextGeneration(b);
+  EXPECT_EQ(next_a.individuals.size(), second.individuals.size());
+  bool all_same = true;
+  for (std::size_t i = 0; i < next_a.individuals.size(); ++i) {
+    EXPECT_EQ(next_a.individuals[i].genome, second.individuals[i].genome);
+    all_same = all_same && next_a.individuals[i].parents == next_b.individuals[i].parents;
+  }
+  EXPECT_FALSE(all_same);
+}
+
 TEST(Breeder, RefusesAPartlyEvaluatedGeneration) {
   Breeder breeder(smallRun(), kEncoding);
   Population p = breeder.initialPopulation();
