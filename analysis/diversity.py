@@ -11,8 +11,10 @@ when the genome format grows. A generation's value is the mean over all pairs, o
 random pairs (seeded, so reruns agree) when there are more.
 
 Also per generation: distinct fitness values, the largest group of identical fitness (a share
-of the population: Krčah 2008's dominant group), nodes per genome (from the genome header) and
-genome bytes.
+of the population: Krčah 2008's dominant group), the share of the population in small groups of
+identical fitness (at most 5 members, Krčah's measure of diversity), nodes per genome (from the
+genome header) and genome bytes. With --groups N it lists a generation's N largest groups
+(size, share, fitness, distinct genomes), as Krčah's Table 4.6 does for the last one.
 
     python3 analysis/diversity.py run/history.h5 --output diversity.png [--table diversity.tsv]
 
@@ -35,8 +37,9 @@ import cambrian_history as ch  # noqa: E402
 
 PROGRAM = "diversity"
 SHINGLE = 4  # bytes per shingle
+SMALL_GROUP = 5  # members of an equal-fitness group counted as small (Krčah 2008, §4)
 COLUMNS = ["generation", "count", "distinct_genomes", "distinct_fitness", "largest_group_share",
-           "fitness_std", "fitness_iqr", "parts_mean", "parts_std", "parts_min", "parts_max",
+           "small_group_share", "fitness_std", "fitness_iqr", "parts_mean", "parts_std", "parts_min", "parts_max",
            "nodes_mean", "genome_bytes_mean", "genotype_distance"]
 
 
@@ -53,10 +56,16 @@ def parse_arguments(argv):
     parser.add_argument("--pairs", type=int, default=2000,
                         help="genome pairs sampled per generation for the distance (default 2000; all pairs when fewer)")
     parser.add_argument("--seed", type=int, default=1, help="seed of the pair sample (default 1)")
+    parser.add_argument("--groups", type=int, default=0,
+                        help="also list the N largest groups of equal fitness of a generation (default 0: none)")
+    parser.add_argument("--groups-generation", type=int, default=None,
+                        help="the generation --groups lists (default: the last)")
     parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNG (default: 120)")
     arguments = parser.parse_args(argv)
     if arguments.pairs < 1:
         parser.error("--pairs must be >= 1")
+    if arguments.groups < 0:
+        parser.error("--groups must be >= 0")
     return arguments
 
 
@@ -91,6 +100,27 @@ def mean_distance(genomes, pairs, rng):
     return float(np.mean([jaccard_distance(sets[a], sets[b]) for a, b in zip(i, j)]))
 
 
+def largest_groups(fitness, genomes, count):
+    """The `count` largest groups of equal fitness, largest first (ties: higher fitness first):
+    dicts of size, share of the population, fitness and distinct genomes in the group."""
+    fitness = np.asarray(fitness, dtype=float)
+    values, sizes = np.unique(fitness, return_counts=True)
+    order = sorted(range(len(values)), key=lambda k: (-sizes[k], -values[k]))[:count]
+    groups = []
+    for k in order:
+        members = np.nonzero(fitness == values[k])[0]
+        groups.append({"size": int(sizes[k]), "share": float(sizes[k] / len(fitness)),
+                       "fitness": float(values[k]),
+                       "distinct_genomes": len({genomes[m] for m in members})})
+    return groups
+
+
+def small_group_share(fitness):
+    """Share of the individuals in groups of equal fitness with at most SMALL_GROUP members."""
+    _, sizes = np.unique(np.asarray(fitness, dtype=float), return_counts=True)
+    return float(sizes[sizes <= SMALL_GROUP].sum() / sizes.sum()) if len(sizes) else 0.0
+
+
 def diversity(individuals, stream, pairs=2000, seed=1):
     """One dict per generation with every column of COLUMNS."""
     rng = np.random.default_rng(seed)
@@ -108,6 +138,7 @@ def diversity(individuals, stream, pairs=2000, seed=1):
             "distinct_genomes": len(set(genomes)),
             "distinct_fitness": len(group_sizes),
             "largest_group_share": float(group_sizes.max() / len(mine)),
+            "small_group_share": small_group_share(fitness),
             "fitness_std": float(fitness.std()),
             "fitness_iqr": float(q75 - q25),
             "parts_mean": float(parts.mean()),
@@ -136,6 +167,7 @@ def plot(rows, output, title, dpi):
     a.plot(g, column("distinct_genomes") / column("count"), marker="o", label="distinct genomes")
     a.plot(g, column("distinct_fitness") / column("count"), marker=".", label="distinct fitness values")
     a.plot(g, column("largest_group_share"), linestyle="--", label="largest equal-fitness group")
+    a.plot(g, column("small_group_share"), linestyle=":", label=f"in equal-fitness groups of ≤ {SMALL_GROUP}")
     a.set_ylabel("share of population")
     a.set_ylim(0, 1.05)
     a.legend(fontsize="small")
@@ -170,8 +202,26 @@ def main(argv=None):
     with ch.History(arguments.history) as history:
         stream = ch.genome_stream(history)
     rows = diversity(individuals, stream, arguments.pairs, arguments.seed)
+    # the largest groups of a generation, checked before anything is written
+    group_lines = []
+    if arguments.groups:
+        generation = individuals["generation"]
+        g = int(generation.max()) if arguments.groups_generation is None else arguments.groups_generation
+        mine = np.nonzero(generation == g)[0]
+        if len(mine) == 0:
+            print(f"{PROGRAM}: --groups-generation {g}: the history has no generation {g}", file=sys.stderr)
+            return ch.EXIT_USAGE
+        genomes = [ch.genome_of(stream, individuals, r) for r in mine]
+        groups = largest_groups(individuals["fitness"][mine], genomes, arguments.groups)
+        group_lines.append(f"# the {len(groups)} largest groups of equal fitness in generation {g} "
+                           "(Krčah 2008, Table 4.6)")
+        group_lines.append("size\tshare\tfitness\tdistinct_genomes")
+        group_lines += [f"{x['size']}\t{x['share']:.4f}\t{x['fitness']:.6g}\t{x['distinct_genomes']}"
+                        for x in groups]
     text = format_table(rows)
     sys.stdout.write(text)
+    if group_lines:
+        print("\n".join(group_lines))
     if arguments.table:
         with open(arguments.table, "w") as handle:
             handle.write(text)

@@ -12,6 +12,10 @@ could only act as a mutation (Krčah 2008 credits those to mutation).
 A *point of improvement* is a generation whose best creature beats the champion of every
 earlier generation; it is credited to the operator that made that creature.
 
+Krčah's classes of mutants (Tables 4.10 and 4.13) are counted per operator too: offspring with
+zero fitness (or a failed status), with the same fitness as their (better) parent, or with a
+different non-zero fitness.
+
 Prints per-operator counts and rates over the run, the points of improvement and the rates per
 window of generations (TSV sections on stdout, headed by `# ` lines), and draws a bar chart.
 
@@ -39,6 +43,7 @@ PROGRAM = "improvements"
 BREEDING = ("mutation", "crossover", "graft", "gene_specification", "gene_split", "gene_purge",
             "branch_specification", "grow_stub", "graft_feature", "segment_crossover")
 OUTCOMES = ("improved", "same", "worse", "failed")
+MUTANT_CLASSES = ("zero", "same", "different")
 
 
 def parse_arguments(argv):
@@ -54,6 +59,8 @@ def parse_arguments(argv):
                         help="generations per window (default: about a fifth of the run, at least 1)")
     parser.add_argument("--table", default=None, help="also write the per-operator table to this TSV file")
     parser.add_argument("--windows-table", default=None, help="also write the per-window table to this TSV file")
+    parser.add_argument("--mutants-table", default=None,
+                        help="also write the mutant classes per operator (zero, same, different) to this TSV file")
     parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNG (default: 120)")
     arguments = parser.parse_args(argv)
     if arguments.window < 0:
@@ -127,6 +134,34 @@ def summarise(classes, points, individuals, first=None, last=None):
         entry = summary.setdefault(point["operator"], dict.fromkeys(("offspring", *OUTCOMES, "points"), 0))
         entry["points"] += 1
     return summary
+
+
+def mutant_classes(individuals, classes):
+    """dict operator -> counts of Krčah's mutant classes: `zero` (fitness 0 or status not ok),
+    `same` (the fitness of the better parent) and `different` (another non-zero fitness)."""
+    counts = {}
+    for row, label, outcome, reference in classes:
+        fitness = float(individuals["fitness"][row])
+        entry = counts.setdefault(label, dict.fromkeys(("offspring", *MUTANT_CLASSES), 0))
+        entry["offspring"] += 1
+        if outcome == "failed" or fitness == 0:
+            entry["zero"] += 1
+        elif fitness == reference:
+            entry["same"] += 1
+        else:
+            entry["different"] += 1
+    return counts
+
+
+def mutant_rows(counts):
+    """TSV lines of the mutant classes, operators sorted by name, with each class's share."""
+    lines = ["operator\toffspring\tzero\tsame\tdifferent\tzero_share\tsame_share\tdifferent_share"]
+    for label in sorted(counts):
+        e = counts[label]
+        shares = [e[k] / e["offspring"] if e["offspring"] else float("nan") for k in MUTANT_CLASSES]
+        lines.append(f"{label}\t{e['offspring']}\t{e['zero']}\t{e['same']}\t{e['different']}\t"
+                     + "\t".join(f"{x:.4f}" for x in shares))
+    return lines
 
 
 def rate(entry):
@@ -208,10 +243,17 @@ def main(argv=None):
             window_lines.append(f"{w['first']}\t{w['last']}\t{label}\t{e['offspring']}\t{e['improved']}\t"
                                 f"{rate(e):.4f}\t{e['points']}")
     lines += window_lines
+    mutants = mutant_rows(mutant_classes(individuals, classes))
+    lines.append("# mutant classes (Krčah 2008, Tables 4.10 and 4.13): zero fitness or failed, the same "
+                 "fitness as the (better) parent, a different non-zero fitness")
+    lines += mutants
     print("\n".join(lines))
     if arguments.table:
         with open(arguments.table, "w") as handle:
             handle.write("\n".join(operator_rows(summary)) + "\n")
+    if arguments.mutants_table:
+        with open(arguments.mutants_table, "w") as handle:
+            handle.write("\n".join(mutants) + "\n")
     if arguments.windows_table:
         with open(arguments.windows_table, "w") as handle:
             handle.write("\n".join(window_lines) + "\n")

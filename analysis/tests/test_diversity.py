@@ -44,6 +44,18 @@ def test_genome_node_count():
     assert ch.genome_node_count(b"XXXX12345678") == -1
 
 
+# Krčah's groups of equal fitness: the largest first, and the share in groups of at most 5
+def test_groups_of_equal_fitness():
+    fitness = [1.0] * 6 + [2.0] * 2 + [3.0] + [0.5] * 2
+    genomes = [b"a"] * 5 + [b"b"] + [b"c", b"c"] + [b"d"] + [b"e", b"f"]
+    groups = diversity.largest_groups(fitness, genomes, 3)
+    assert groups == [{"size": 6, "share": 6 / 11, "fitness": 1.0, "distinct_genomes": 2},
+                      {"size": 2, "share": 2 / 11, "fitness": 2.0, "distinct_genomes": 1},
+                      {"size": 2, "share": 2 / 11, "fitness": 0.5, "distinct_genomes": 2}]
+    assert diversity.small_group_share(fitness) == pytest.approx(5 / 11)
+    assert diversity.small_group_share([1.0] * 6) == 0.0
+
+
 # per generation, the table agrees with the history's own columns
 def test_fixture_table_agrees_with_history(run_history):
     with ch.History(run_history) as h:
@@ -57,17 +69,29 @@ def test_fixture_table_agrees_with_history(run_history):
         assert row["parts_min"] == parts.min() and row["parts_max"] == parts.max()
         assert row["parts_mean"] == pytest.approx(parts.mean())
         assert 1 <= row["distinct_fitness"] <= count and 0 < row["largest_group_share"] <= 1
+        assert 0 <= row["small_group_share"] <= 1
         assert row["nodes_mean"] >= 1 and row["genome_bytes_mean"] > 12
         assert 0.0 <= row["genotype_distance"] <= 1.0
     # generation 0 is random: its genomes differ
     assert rows[0]["genotype_distance"] > 0.1
 
 
-def test_command_line(sweep_dir, run_history, tmp_path):
+def test_command_line(sweep_dir, run_history, tmp_path, capsys):
     assert diversity.main([run_history, "--output", str(tmp_path / "d.png"), "--table", str(tmp_path / "d.tsv")]) == 0
     assert (tmp_path / "d.png").read_bytes()[:8] == PNG
     lines = (tmp_path / "d.tsv").read_text().splitlines()
     assert lines[0].split("\t") == diversity.COLUMNS and len(lines) > 2
+    capsys.readouterr()
+    # the largest groups of the last generation, then of generation 0; a generation not there
+    assert diversity.main([run_history, "--output", str(tmp_path / "d.png"), "--groups", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "largest groups of equal fitness in generation" in out and "size\tshare\tfitness" in out
+    assert diversity.main([run_history, "--output", str(tmp_path / "d.png"), "--groups", "2",
+                           "--groups-generation", "0"]) == 0
+    assert "in generation 0 " in capsys.readouterr().out
+    assert diversity.main([run_history, "--output", str(tmp_path / "d.png"), "--groups", "2",
+                           "--groups-generation", "999"]) == 2
+    assert "no generation 999" in capsys.readouterr().err
 
 
 def test_runs_as_a_script(sweep_dir, run_script):

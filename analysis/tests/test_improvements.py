@@ -46,6 +46,26 @@ def test_classes_of_a_hand_made_table():
     assert summary["crossover (same parents)"]["points"] == 1 and summary["graft"]["same"] == 1
 
 
+# Krčah's mutant classes: zero fitness or failed, the same fitness as the (better) parent, another
+# non-zero fitness
+def test_mutant_classes_of_a_hand_made_table():
+    table, labels = hand_made()
+    # two more mutants of 0: one with its parent's fitness, one with fitness 0 and status ok
+    for name in table:
+        extra = {"id": [7, 8], "generation": [1, 1], "parent_a": [0, 0], "parent_b": [NO, NO],
+                 "fitness": [1.0, 0.0], "status": [0, 0]}[name]
+        table[name] = np.concatenate([table[name], np.array(extra, dtype=table[name].dtype)])
+    labels = np.concatenate([labels, ["mutation", "mutation"]])
+    classes = improvements.classify(table, labels, ["ok", "invalid_body", "x", "exploded"])
+    counts = improvements.mutant_classes(table, classes)
+    assert counts["mutation"] == {"offspring": 4, "zero": 2, "same": 1, "different": 1}
+    assert counts["graft"] == {"offspring": 1, "zero": 0, "same": 1, "different": 0}
+    assert counts["crossover"] == {"offspring": 1, "zero": 0, "same": 0, "different": 1}
+    rows = improvements.mutant_rows(counts)
+    assert rows[0].startswith("operator\toffspring\tzero\tsame\tdifferent")
+    assert "mutation\t4\t2\t1\t1\t0.5000\t0.2500\t0.2500" in rows
+
+
 # identical genome bytes count as identical parents even with different ids
 def test_identical_genomes_count_as_same_parents():
     table, labels = hand_made()
@@ -84,6 +104,11 @@ def test_command_line(sweep_dir, run_history, tmp_path, capsys):
     assert header.startswith("operator\toffspring\timproved")
     firsts = {line.split("\t")[0] for line in (tmp_path / "win.tsv").read_text().splitlines()[1:]}
     assert firsts <= {"0", "2", "4", "6", "8"} and "0" in firsts
+    assert improvements.main([run_history, "--output", str(tmp_path / "i.png"),
+                              "--mutants-table", str(tmp_path / "mutants.tsv")]) == 0
+    assert "mutant classes" in capsys.readouterr().out
+    mutants = (tmp_path / "mutants.tsv").read_text().splitlines()
+    assert mutants[0].startswith("operator\toffspring\tzero") and len(mutants) > 1
 
 
 def test_runs_as_a_script(sweep_dir, run_script):
