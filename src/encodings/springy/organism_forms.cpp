@@ -56,9 +56,9 @@ bool isWritableName(const std::string& name) {
   if (name.empty())
     return false;
   for (char c : name) {
-    if (c == '#' || c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f' ||
-        c == '\0')
-      return false;
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '#' || c == ' ' || byte < 0x20 || byte == 0x7f)
+      return false;  // '#' starts a comment; spaces and control characters end a word
   }
   return true;
 }
@@ -124,6 +124,8 @@ Organism parseOrganismText(const std::string& text, const std::string& source) {
     } else if (keyword == "node") {
       Node node;
       node.name = std::string(line.next("node", "a name"));
+      if (!isWritableName(node.name))
+        line.fail("a node's name is one word of printable characters");
       line.context("node '" + node.name + "'");
       if (!nodes.emplace(node.name, static_cast<int>(organism.nodes.size())).second)
         line.fail("a node of this name comes before");
@@ -142,6 +144,8 @@ Organism parseOrganismText(const std::string& text, const std::string& source) {
       Tube tube;
       tube.kind = keyword == "rod" ? TubeKind::rod : TubeKind::muscle;
       tube.name = std::string(line.next(keyword, "a name"));
+      if (!isWritableName(tube.name))
+        line.fail("a " + keyword + "'s name is one word of printable characters");
       line.context(keyword + " '" + tube.name + "'");
       if (!tubes.emplace(tube.name, static_cast<int>(organism.tubes.size())).second)
         line.fail("a rod or muscle of this name comes before");

@@ -30,7 +30,8 @@ std::vector<std::uint8_t> organismToBytes(const Organism& organism);
 /// Reads the byte form; throws InputError naming the field on bad or truncated bytes.
 Organism organismFromBytes(const std::uint8_t* bytes, std::size_t size);
 
-/// Whether `name` can name a node or tube in the text form: not empty, no whitespace or '#'.
+/// Whether `name` can name a node or tube in the text form: not empty, no space, '#' or control
+/// character (bytes of UTF-8 letters are fine).
 bool isWritableName(const std::string& name);
 
 }  // namespace cambrian::springy

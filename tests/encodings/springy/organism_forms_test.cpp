@@ -114,6 +114,8 @@ TEST(OrganismForms, BadTextIsRefusedNamingTheLineAndField) {
             "hand.organism:1: format version 2 is newer than this cambrian (1)");
   EXPECT_EQ(textFailure("cambrian-genome 2\n"),
             "hand.organism:1: expected the header 'cambrian-springy 1', got 'cambrian-genome'");
+  EXPECT_EQ(textFailure(head + std::string("rod r\0x a b\nend\n", 16)),
+            "hand.organism:4: a rod's name is one word of printable characters");
   EXPECT_EQ(textFailure("# nothing\n"),
             "hand.organism: empty (expected the header 'cambrian-springy 1')");
 }
