@@ -1,4 +1,4 @@
-// cambrian: the distance, displacement, approach, height and throw juries and the walk
+// cambrian: the distance, displacement, approach, flag, height and throw juries and the walk
 // normalisations.
 #include "tasks/juries.hpp"
 
@@ -6,6 +6,13 @@
 #include <cmath>
 
 namespace cambrian {
+
+namespace {
+// horizontal distance between two points, m
+double horizontal(Vec3 a, Vec3 b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+}  // namespace
 
 Vec3 trackedPosition(const Simulation& simulation, TrackedPoint point) {
   return point == TrackedPoint::root ? simulation.world().partPosition(0)
@@ -43,6 +50,30 @@ double ApproachJury::value(const Simulation& simulation) const {
   return start_distance_ - norm(simulation.light() - simulation.centerOfMass());
 }
 
+void FlagJury::begin(const Simulation& simulation) {
+  const Vec3 start = simulation.centerOfMass();
+  flag_ = {start.x + offset_.x, start.y + offset_.y, 0};
+  steps_ = 0;
+  reached_ = horizontal(start, flag_) <= radius_;
+}
+
+void FlagJury::observe(const Simulation& simulation) {
+  if (reached_)
+    return;
+  ++steps_;
+  reached_ = horizontal(simulation.centerOfMass(), flag_) <= radius_;
+}
+
+double FlagJury::value(const Simulation& simulation) const {
+  return horizontal(simulation.centerOfMass(), flag_);
+}
+
+double flagFitness(double distance, double start_distance, double seconds, double limit,
+                   double alpha, double beta) {
+  const double closer = distance <= start_distance ? alpha * (start_distance - distance) : 0;
+  return closer + beta * (limit - seconds);
+}
+
 void HeightJury::begin(const Simulation& simulation) {
   best_ = simulation.lowestPoint();
 }
@@ -71,13 +102,6 @@ double volumeFactor(const BodyPlan& plan) {
   double volume = plan.totalVolume();
   return volume > 0 ? 1.0 / std::cbrt(volume) : 0;
 }
-
-namespace {
-// horizontal distance between two points, m
-double horizontal(Vec3 a, Vec3 b) {
-  return std::hypot(a.x - b.x, a.y - b.y);
-}
-}  // namespace
 
 void ThrowJury::begin(const Simulation& simulation) {
   steps_ = 0;

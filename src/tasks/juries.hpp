@@ -82,6 +82,36 @@ class ApproachJury : public Jury {
   double start_distance_ = 0;
 };
 
+/// "flag_distance": the horizontal distance of the centre of mass from a flag placed at
+/// `offset` (x, y) from where the centre of mass was when measuring began, m. The jury finishes,
+/// and the phase ends, once the centre of mass is within `radius` of the flag (Krčah 2008: "the
+/// run stops when it is within R metres of the flag").
+class FlagJury : public Jury {
+ public:
+  FlagJury(Vec3 offset, double radius) : offset_(offset), radius_(radius) {}
+  const char* name() const override { return "flag_distance"; }
+  void begin(const Simulation& simulation) override;
+  void observe(const Simulation& simulation) override;
+  double value(const Simulation& simulation) const override;
+  bool finished() const override { return reached_; }
+  /// Measured steps until the flag was reached (all of them while it is not).
+  std::uint64_t steps() const { return steps_; }
+  bool reached() const { return reached_; }
+
+ private:
+  Vec3 offset_;
+  double radius_;
+  Vec3 flag_;
+  std::uint64_t steps_ = 0;
+  bool reached_ = false;
+};
+
+/// Krčah's flag fitness f(d) + g(t): α · (D − d) when the final distance d to the flag is at most
+/// D, the flag's distance from the start (else 0), plus β · (N − t) for reaching it at t of the N
+/// seconds (0 when it is not reached: t = N).
+double flagFitness(double distance, double start_distance, double seconds, double limit,
+                   double alpha, double beta);
+
 /// "height": the highest the creature's lowest point rose above the ground, m (WWD's jump).
 class HeightJury : public Jury {
  public:

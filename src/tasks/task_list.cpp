@@ -13,11 +13,12 @@ const Task& swimTask();         // tasks/swim.cpp
 const Task& followLightTask();  // tasks/follow_light.cpp
 const Task& catapultTask();     // tasks/catapult.cpp
 const Task& juriesTask();       // tasks/juries_task.cpp
+const Task& flagTask();         // tasks/flag.cpp
 
 const std::vector<const Task*>& tasks() {
   static const std::vector<const Task*> registered = {
       &walkTask(),        &jumpTask(),     &syntheticTask(), &swimTask(),
-      &followLightTask(), &catapultTask(), &juriesTask(),
+      &followLightTask(), &catapultTask(), &juriesTask(),    &flagTask(),
   };
   return registered;
 }

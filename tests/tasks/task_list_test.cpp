@@ -29,7 +29,7 @@ TEST(Tasks, NamesAreDistinctAndEachDeclaresMeasures) {
   }
   EXPECT_EQ(names.size(), tasks().size());
   EXPECT_EQ(taskNames(), (std::vector<std::string>{"walk", "jump", "synthetic", "swim",
-                                                   "follow_light", "catapult", "juries"}));
+                                                   "follow_light", "catapult", "juries", "flag"}));
 }
 
 // every task's settings fit in one schema: no key is declared by two tasks
