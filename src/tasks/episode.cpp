@@ -167,6 +167,12 @@ bool Episode::settle(double seconds, EvalPhase phase) {
                   settings_.rest_check) == PhaseEnd::done;
 }
 
+bool Episode::startUp() {
+  return settle(settings_.settle_time, EvalPhase::settle) &&
+         run(settings_.trial_time, EvalPhase::trial) &&
+         settle(settings_.resettle_time, EvalPhase::resettle);
+}
+
 bool Episode::run(double seconds, EvalPhase phase, std::initializer_list<Jury*> juries) {
   return runSteps(stepsIn(seconds, simulation_->timeStep()), true, phase, juries, false) ==
          PhaseEnd::done;

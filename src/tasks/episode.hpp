@@ -64,6 +64,10 @@ class Episode {
   bool settle(double seconds, EvalPhase phase);
   /// `seconds` with the controller on; each jury begins first and observes every step.
   bool run(double seconds, EvalPhase phase, std::initializer_list<Jury*> juries = {});
+  /// Chaumont et al.'s start-up before measuring: settle (task.settle_time, controller off), a
+  /// trial (task.trial_time, on), settle again (task.resettle_time); false once a phase ends the
+  /// evaluation.
+  bool startUp();
 
   /// Moves the light the photosensors point at (a task that makes the creature follow it).
   void moveLight(Vec3 position) { simulation_->moveLight(position); }

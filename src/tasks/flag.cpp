@@ -58,9 +58,7 @@ void FlagTask::declareSettings(SettingsSchema& s) {
 void FlagTask::run(Episode& episode) const {
   // the start-up phases, then at most N s towards the flag
   const EpisodeSettings& s = episode.settings();
-  if (!episode.settle(s.settle_time, EvalPhase::settle) ||
-      !episode.run(s.trial_time, EvalPhase::trial) ||
-      !episode.settle(s.resettle_time, EvalPhase::resettle))
+  if (!episode.startUp())
     return;
   FlagJury flag(Vec3{flag_x, flag_y, 0}, flag_radius);
   if (!episode.run(s.evaluation_time, EvalPhase::measure, {&flag}))

@@ -54,9 +54,7 @@ std::vector<MeasureInfo> WalkTask::measures() const {
 void WalkTask::run(Episode& episode) const {
   // Chaumont's start-up: settle controller off, trial on, settle again; then measure
   const EpisodeSettings& s = episode.settings();
-  if (!episode.settle(s.settle_time, EvalPhase::settle) ||
-      !episode.run(s.trial_time, EvalPhase::trial) ||
-      !episode.settle(s.resettle_time, EvalPhase::resettle))
+  if (!episode.startUp())
     return;
   DistanceJury distance(distance_of);
   if (!episode.run(s.evaluation_time, EvalPhase::measure, {&distance}))
