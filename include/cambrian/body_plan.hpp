@@ -67,6 +67,25 @@ struct PartPlan {
   double cross_section = 0;  ///< m^2, a face meeting at the joint (genome.strength_section);
                              ///< physics turns it into the joint's maximum torque
   bool reflected = false;    ///< made through a reflected connection
+  /// the joint's maximum force (prismatic, N) or torque (N m); negative: physics.strength_per_area
+  /// x cross_section
+  double strength = -1;
+  /// false: no collider of its own, only its mass and the inertia of its shape (a spring-mass
+  /// organism's proxy body); it may still carry colliders (BodyPlan::colliders)
+  bool solid = true;
+  int contact_group = -1;  ///< see ColliderPlan::groups; -1: none
+};
+
+/// A collider a part carries besides its own shape, fixed in the part's frame (a spring-mass
+/// organism's tube on one of its end nodes). It adds no mass; only the rigid-body world builds it.
+struct ColliderPlan {
+  int part = 0;
+  PartShape shape = PartShape::capsule;
+  Vec3 size;       ///< full size, m (see PartShape)
+  Transform pose;  ///< in the part's frame
+  /// Colliders and parts that share a group never touch each other (a spring-mass organism's
+  /// node: its sphere and the tubes that meet there); -1: none.
+  std::array<int, 2> groups{-1, -1};
 };
 
 /// A joint that closes a loop between two parts already joined through the tree (a ladder's
@@ -100,6 +119,10 @@ struct SensorPlan {
 enum class EffectorKind : std::uint8_t {
   joint,    ///< drives degree of freedom `dof` of the joint between `part` and its parent
   release,  ///< lets go of held object `dof` once the command exceeds kReleaseCommand, for good
+  /// drives degree of freedom `dof` of the joint between `part` and its parent to the position
+  /// command x the joint's limit by the end of the step, with the joint's strength (a servo: a
+  /// spring-mass organism's muscle)
+  position,
 };
 
 /// The command above which a release effector lets go (Chaumont et al.'s ignition).
@@ -133,6 +156,7 @@ struct BodyPlan {
   std::vector<SensorPlan> sensors;
   std::vector<EffectorPlan> effectors;
   std::vector<HeldObject> held;  ///< objects held at birth (a catapult's projectile)
+  std::vector<ColliderPlan> colliders;  ///< colliders parts carry besides their own shapes
   bool truncated = false;        ///< development stopped at its part limit
 
   /// Joints of the tree plus loop joints.

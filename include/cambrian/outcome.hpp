@@ -17,7 +17,11 @@ enum class EvalStatus : std::uint8_t {
   unstable,          ///< the creature never came to rest in a settle phase
   timeout,           ///< the wall-clock bound of one evaluation was exceeded
   failed,            ///< an exception inside the evaluation (message says which)
+  joint_error,       ///< a joint came apart further than physics.max_joint_error
+  self_contact,      ///< the parts hit each other more often than physics.max_contact_rate
 };
+/// Number of EvalStatus values.
+constexpr int kEvalStatusKinds = 10;
 
 /// Lower-case status name ("self_penetration").
 const char* statusName(EvalStatus status);

@@ -26,6 +26,10 @@ const char* statusName(EvalStatus status) {
       return "timeout";
     case EvalStatus::failed:
       return "failed";
+    case EvalStatus::joint_error:
+      return "joint_error";
+    case EvalStatus::self_contact:
+      return "self_contact";
   }
   return "unknown";
 }
@@ -58,7 +62,7 @@ Outcome readOutcome(ByteReader& r) {
   Outcome o;
   r.context("status");
   std::uint64_t status = r.u64();
-  if (status > static_cast<std::uint64_t>(EvalStatus::failed))
+  if (status >= static_cast<std::uint64_t>(kEvalStatusKinds))
     r.fail("status = " + std::to_string(status) + " is unknown");
   o.status = static_cast<EvalStatus>(status);
   r.context("fitness");

@@ -117,6 +117,19 @@ std::vector<DragCoefficients> fluidDrag(const BodyPlan& plan, const Environment&
   return drag;
 }
 
+std::string rigidBodyOnly(const BodyPlan& plan) {
+  if (!plan.colliders.empty())
+    return "colliders carried by parts (the first on part " +
+           std::to_string(plan.colliders[0].part) + ")";
+  for (std::size_t i = 0; i < plan.parts.size(); ++i)
+    if (!plan.parts[i].solid)
+      return "parts without a collider of their own (part " + std::to_string(i) + ")";
+  for (const EffectorPlan& effector : plan.effectors)
+    if (effector.kind == EffectorKind::position)
+      return "position effectors (on part " + std::to_string(effector.part) + ")";
+  return {};
+}
+
 std::string heldObjectProblem(const BodyPlan& plan, std::size_t h) {
   const HeldObject& held = plan.held[h];
   if (held.part >= 0 && held.part < static_cast<int>(plan.parts.size()) && held.mass > 0)
@@ -261,6 +274,25 @@ void markGroundContacts(btDispatcher& dispatcher, std::vector<std::uint8_t>& tou
       }
     }
   }
+}
+
+void touchingPartPairs(btDispatcher& dispatcher, std::vector<std::pair<int, int>>& pairs) {
+  pairs.clear();
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    const int a = manifold->getBody0()->getUserIndex();
+    const int b = manifold->getBody1()->getUserIndex();
+    if (a < 0 || b < 0)
+      continue;
+    for (int c = 0; c < manifold->getNumContacts(); ++c) {
+      if (manifold->getContactPoint(c).getDistance() <= 0.001) {
+        pairs.emplace_back(std::min(a, b), std::max(a, b));
+        break;
+      }
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 }
 
 std::string birthOverlap(btCollisionWorld& world, int held_first, int held_count,

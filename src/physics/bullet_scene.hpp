@@ -67,6 +67,12 @@ Vec3 birthPosition(const BodyPlan& plan, const Environment& environment, double 
 std::vector<DragCoefficients> fluidDrag(const BodyPlan& plan, const Environment& environment);
 /// What is wrong with held object `h` of `plan` (a part it cannot name, no mass); empty if nothing.
 std::string heldObjectProblem(const BodyPlan& plan, std::size_t h);
+/// The pairs of parts (user indices >= 0) touching each other in the dispatcher's manifolds, each
+/// (lower, higher), sorted, without repeats.
+void touchingPartPairs(btDispatcher& dispatcher, std::vector<std::pair<int, int>>& pairs);
+/// What of `plan` only the rigid-body world builds (carried colliders, parts without a collider,
+/// position effectors), in words; empty when nothing.
+std::string rigidBodyOnly(const BodyPlan& plan);
 /// The world pose of a body.
 Transform poseOf(const btCollisionObject& body);
 /// The unit direction from a body towards the world point `point`, in the body's frame.

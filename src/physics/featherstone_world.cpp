@@ -492,6 +492,11 @@ void FeatherstoneWorld::build(double birth_height) {
     refuse(EvalStatus::invalid_body, message.str());
     return;
   }
+  if (std::string missing = rigidBodyOnly(plan_); !missing.empty()) {
+    refuse(EvalStatus::invalid_body, "physics.world = featherstone does not build " + missing +
+                                         "; physics.world = rigid_bodies does");
+    return;
+  }
 
   // world: the environment's gravity, fixed-step solver settings, ground plane (if any)
   if (physics_.ground_contact_corners)
@@ -731,6 +736,11 @@ const std::vector<std::uint8_t>& FeatherstoneWorld::contacts() {
 const std::vector<std::uint8_t>& FeatherstoneWorld::groundContacts() {
   markGroundContacts(*bullet_->world.getDispatcher(), ground_contact_);
   return ground_contact_;
+}
+
+const std::vector<std::pair<int, int>>& FeatherstoneWorld::partContacts() {
+  touchingPartPairs(*bullet_->world.getDispatcher(), part_contacts_);
+  return part_contacts_;
 }
 
 double FeatherstoneWorld::jointPosition(int part, int dof) const {

@@ -45,6 +45,8 @@ class FeatherstoneWorld : public World {
   Vec3 partInertia(int part) const override;
   const std::vector<std::uint8_t>& contacts() override;
   const std::vector<std::uint8_t>& groundContacts() override;
+  const std::vector<std::pair<int, int>>& partContacts() override;
+  double largestJointError() const override { return 0; }
   Vec3 directionInPart(int part, Vec3 point) const override;
   double lowestPoint() const override;
   Transform objectPose(int object) const override;
@@ -77,6 +79,7 @@ class FeatherstoneWorld : public World {
   std::vector<double> max_torque_;
   std::vector<std::uint8_t> contact_;
   std::vector<std::uint8_t> ground_contact_;  // groundContacts()
+  std::vector<std::pair<int, int>> part_contacts_;  // partContacts()
   std::vector<int> part_link_;          // per part: the Bullet link carrying it (-1: the base)
   std::vector<DragCoefficients> drag_;  // per part, then per object and held object: in a fluid
   std::size_t held_first_ = 0;          // the first held object's index among the rigid bodies

@@ -99,6 +99,19 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "a joint turning faster than this has exploded, rad/s (sliders m/s; 0 = not watched)")
       .require([&p] { return p.max_joint_speed >= 0 && p.max_joint_speed < 100; },
                "must be in [0, 100) (0 = not watched; Bullet clamps joint speeds at 100)");
+  s.add("physics.max_angular_speed", p.max_angular_speed,
+        "a part turning faster than this has exploded, rad/s (0 = not watched)")
+      .require([&p] { return p.max_angular_speed >= 0 && std::isfinite(p.max_angular_speed); },
+               "must be >= 0 and finite (0 = not watched)");
+  s.add("physics.max_joint_error", p.max_joint_error,
+        "a joint whose pivots part further than this ends the evaluation with status "
+        "joint_error, m (0 = not watched)")
+      .require([&p] { return p.max_joint_error >= 0 && std::isfinite(p.max_joint_error); },
+               "must be >= 0 and finite (0 = not watched)");
+  s.add("physics.max_contact_rate", p.max_contact_rate,
+        "more new touches between the creature's own parts than this in the last simulated "
+        "second end the evaluation with status self_contact, per s (negative = not watched)")
+      .require([&p] { return std::isfinite(p.max_contact_rate); }, "must be finite");
   s.add("physics.penetration_tolerance", p.penetration_tolerance,
         "overlap allowed between non-adjacent parts at birth, m")
       .require(

@@ -88,6 +88,16 @@ struct PhysicsSettings {
   /// rad/s (prismatic: m/s): a joint turning faster has exploded (Minemonics discards creatures
   /// of "very high joint velocities"); 0: not watched. Bullet clamps every joint's speed at 100.
   double max_joint_speed = 0;
+  /// rad/s: a part turning faster has exploded (the springy organisms' "maximal allowed angular
+  /// velocity"); 0: not watched
+  double max_angular_speed = 0;
+  /// m: a joint whose two pivots have come further apart than this has status joint_error (the
+  /// springy organisms' "maximal allowed joint error"); 0: not watched
+  double max_joint_error = 0;
+  /// hits per second: more new touches between the creature's own parts over the last simulated
+  /// second give status self_contact (the springy organisms' "maximal allowed contacts");
+  /// negative: not watched
+  double max_contact_rate = -1;
   double penetration_tolerance = 0.002;  ///< m of overlap allowed between non-adjacent parts at
                                          ///< birth
   double max_wall_seconds = 60;          ///< wall-clock bound of one evaluation (0 = none)

@@ -3,6 +3,8 @@
 
 #include "physics/bullet_scene.hpp"
 
+#include <BulletCollision/CollisionDispatch/btCompoundCollisionAlgorithm.h>
+#include <BulletCollision/CollisionDispatch/btCompoundCompoundCollisionAlgorithm.h>
 #include <BulletDynamics/ConstraintSolver/btFixedConstraint.h>
 #include <BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h>
 #include <btBulletDynamicsCommon.h>
@@ -32,6 +34,14 @@ class PartBody : public btRigidBody {
  private:
   const bool* self_contacts_;
 };
+
+// Bullet's child-shape filter for compound parts: shapes that share a contact group never touch
+// (ColliderPlan::groups, carried as each shape's two user indices; -1 on every other shape)
+bool shareNoGroup(const btCollisionShape* a, const btCollisionShape* b) {
+  const int b0 = b->getUserIndex(), b1 = b->getUserIndex2();
+  auto shares = [&](int group) { return group >= 0 && (group == b0 || group == b1); };
+  return !shares(a->getUserIndex()) && !shares(a->getUserIndex2());
+}
 
 // the rotation whose columns are the joint's axes, made orthonormal in their order (the
 // directed graph's already are)
@@ -183,11 +193,18 @@ void RigidBodyWorld::build(double birth_height) {
   }
 
   // the parts, each with its material
+  for (const ColliderPlan& collider : plan_.colliders) {
+    if (collider.part < 0 || collider.part >= part_count) {
+      refuse(EvalStatus::invalid_body,
+             "a collider is carried by part " + std::to_string(collider.part) + " of " +
+                 std::to_string(part_count));
+      return;
+    }
+  }
   max_torque_.assign(part_count, 0);
   for (int i = 0; i < part_count; ++i) {
     const PartPlan& part = plan_.parts[i];
-    b.shapes.push_back(shapeOf(part.shape, part.size));
-    btRigidBody::btRigidBodyConstructionInfo info(part.mass, nullptr, b.shapes.back().get(),
+    btRigidBody::btRigidBodyConstructionInfo info(part.mass, nullptr, partShape(i),
                                                   inertiaOf(part.shape, part.size, part.mass));
     info.m_startWorldTransform = start[i];
     info.m_friction = part.material.friction;
@@ -198,7 +215,8 @@ void RigidBodyWorld::build(double birth_height) {
     body.setActivationState(DISABLE_DEACTIVATION);
     anchorFriction(body, part.shape, physics_);
     b.world.addRigidBody(&body);
-    max_torque_[i] = physics_.strength_per_area * part.cross_section;
+    max_torque_[i] =
+        part.strength >= 0 ? part.strength : physics_.strength_per_area * part.cross_section;
   }
   addJoints();
   contact_.assign(part_count, 0);
@@ -209,6 +227,37 @@ void RigidBodyWorld::build(double birth_height) {
   addHeldObjects();
 
   drag_ = fluidDrag(plan_, environment_);  // Sims' water
+}
+
+btCollisionShape* RigidBodyWorld::partShape(int i) {
+  // the part's own shape; a compound of it (when solid) and the colliders it carries when it
+  // carries any, is not solid or has a contact group (whose shapes the group filter reads)
+  RigidBodyObjects& b = *bullet_;
+  const PartPlan& part = plan_.parts[i];
+  const bool carries = std::any_of(plan_.colliders.begin(), plan_.colliders.end(),
+                                   [i](const ColliderPlan& c) { return c.part == i; });
+  if (part.solid && !carries && part.contact_group < 0) {
+    b.shapes.push_back(shapeOf(part.shape, part.size));
+    return b.shapes.back().get();
+  }
+  gCompoundChildShapePairCallback = shareNoGroup;
+  gCompoundCompoundChildShapePairCallback = shareNoGroup;
+  auto compound = std::make_unique<btCompoundShape>();
+  auto add = [&](PartShape shape, Vec3 size, const btTransform& pose, int group_a, int group_b) {
+    b.shapes.push_back(shapeOf(shape, size));
+    b.shapes.back()->setUserIndex(group_a);
+    b.shapes.back()->setUserIndex2(group_b);
+    compound->addChildShape(pose, b.shapes.back().get());
+  };
+  if (part.solid)
+    add(part.shape, part.size, btTransform::getIdentity(), part.contact_group, -1);
+  for (const ColliderPlan& c : plan_.colliders) {
+    if (c.part == i)
+      add(c.shape, c.size, btTransform(toBt(c.pose.rotation), toBt(c.pose.position)), c.groups[0],
+          c.groups[1]);
+  }
+  b.shapes.push_back(std::move(compound));
+  return b.shapes.back().get();
 }
 
 void RigidBodyWorld::addJoints() {
@@ -265,15 +314,20 @@ void RigidBodyWorld::addJoints() {
     const btTransform in_a(b_in_a * frame, toBt(loop.pivot_in_a));
     b.loops.push_back(make(a, c, in_a, in_b, loop.joint, loop.joint_limit, Vec3{-1, -1, -1}));
   }
-  if (physics_.actuation == Actuation::saturated_motor) {
-    for (const EffectorPlan& effector : plan_.effectors) {
-      if (effector.kind != EffectorKind::joint || effector.part <= 0)
-        continue;
-      const PartPlan& part = plan_.parts[static_cast<std::size_t>(effector.part)];
-      if (effector.dof < degreesOfFreedom(part.joint))
-        b.joints[effector.part]->enableMotor(constraintAxis(part.joint, effector.dof), true);
-    }
+  // motors: on every position effector's axis, and on the joint effectors' when saturated
+  for (const EffectorPlan& effector : plan_.effectors) {
+    if (!drivesJoint(effector) || (effector.kind == EffectorKind::joint &&
+                                   physics_.actuation != Actuation::saturated_motor))
+      continue;
+    const PartPlan& part = plan_.parts[static_cast<std::size_t>(effector.part)];
+    b.joints[effector.part]->enableMotor(constraintAxis(part.joint, effector.dof), true);
   }
+}
+
+bool RigidBodyWorld::drivesJoint(const EffectorPlan& effector) const {
+  return (effector.kind == EffectorKind::joint || effector.kind == EffectorKind::position) &&
+         effector.part > 0 && effector.part < static_cast<int>(plan_.parts.size()) &&
+         effector.dof < degreesOfFreedom(plan_.parts[static_cast<std::size_t>(effector.part)].joint);
 }
 
 void RigidBodyWorld::addHeldObjects() {
@@ -348,13 +402,21 @@ void RigidBodyWorld::applyTorques(std::span<const double> commands) {
 
   for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
     const EffectorPlan& effector = plan_.effectors[e];
-    if (effector.kind != EffectorKind::joint || effector.part <= 0)
+    if (!drivesJoint(effector))
       continue;
     const PartPlan& part = plan_.parts[static_cast<std::size_t>(effector.part)];
-    if (effector.dof >= degreesOfFreedom(part.joint))
-      continue;
     const double command = commands.empty() ? 0.0 : commands[e];
-    if (physics_.actuation == Actuation::saturated_motor) {
+    if (effector.kind == EffectorKind::position) {
+      // the speed that reaches the commanded position by the end of the step, with the joint's
+      // whole strength (a controller that is off holds the position of birth)
+      btGeneric6DofSpring2Constraint& joint = *b.joints[effector.part];
+      const int axis = constraintAxis(part.joint, effector.dof);
+      const double target = command * part.joint_limit[effector.dof];
+      const double speed = (target - jointPosition(effector.part, effector.dof)) /
+                           (physics_.time_step / physics_.substeps * substeps_left_);
+      joint.setTargetVelocity(axis, -speed);
+      joint.setMaxMotorForce(axis, max_torque_[effector.part]);
+    } else if (physics_.actuation == Actuation::saturated_motor) {
       // the command's sign picks the target speed, its size the torque budget (Bullet's 6-DoF
       // motor drives the parent relative to the child: the sign is turned)
       btGeneric6DofSpring2Constraint& joint = *b.joints[effector.part];
@@ -374,6 +436,7 @@ void RigidBodyWorld::step(std::span<const double> commands) {
     release(commands);
   RigidBodyObjects& b = *bullet_;
   for (int k = 0; k < physics_.substeps; ++k) {
+    substeps_left_ = physics_.substeps - k;
     applyTorques(commands);
     if (!drag_.empty()) {
       for (std::size_t i = 0; i < b.parts.size(); ++i)
@@ -389,12 +452,15 @@ void RigidBodyWorld::step(std::span<const double> commands) {
         joint->calculateTransforms();
     // no effector pushes harder than its limit x |command|, at the speed the step ended with
     if (!commands.empty()) {
+      // (a position effector has its whole strength whatever its command)
       for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
         const EffectorPlan& effector = plan_.effectors[e];
-        if (effector.kind == EffectorKind::joint && effector.part > 0 &&
-            effector.dof < degreesOfFreedom(plan_.parts[effector.part].joint))
-          work_bound_ += std::abs(commands[e]) * max_torque_[effector.part] *
-                         std::abs(jointSpeed(effector.part, effector.dof)) * substep;
+        if (!drivesJoint(effector))
+          continue;
+        const double share =
+            effector.kind == EffectorKind::position ? 1.0 : std::abs(commands[e]);
+        work_bound_ += share * max_torque_[effector.part] *
+                       std::abs(jointSpeed(effector.part, effector.dof)) * substep;
       }
     }
   }
@@ -470,6 +536,34 @@ const std::vector<std::uint8_t>& RigidBodyWorld::groundContacts() {
   return ground_contact_;
 }
 
+const std::vector<std::pair<int, int>>& RigidBodyWorld::partContacts() {
+  touchingPartPairs(*bullet_->world.getDispatcher(), part_contacts_);
+  return part_contacts_;
+}
+
+double RigidBodyWorld::largestJointError() const {
+  // each joint's frame on each of its bodies, where the bodies are now: the distance between
+  // the two frames' origins, less a slider's travel along its axis
+  double largest = 0;
+  auto measure = [&largest](const btGeneric6DofSpring2Constraint& joint, JointType type) {
+    const btTransform a =
+        joint.getRigidBodyA().getWorldTransform() * joint.getFrameOffsetA();
+    const btTransform c =
+        joint.getRigidBodyB().getWorldTransform() * joint.getFrameOffsetB();
+    btVector3 apart = c.getOrigin() - a.getOrigin();
+    if (type == JointType::prismatic) {
+      const btVector3 axis = a.getBasis().getColumn(0);
+      apart -= axis * apart.dot(axis);
+    }
+    largest = std::max(largest, static_cast<double>(apart.length()));
+  };
+  for (std::size_t i = 1; i < plan_.parts.size(); ++i)
+    measure(*bullet_->joints[i], plan_.parts[i].joint);
+  for (std::size_t k = 0; k < plan_.loops.size(); ++k)
+    measure(*bullet_->loops[k], plan_.loops[k].joint);
+  return largest;
+}
+
 Vec3 RigidBodyWorld::directionInPart(int part, Vec3 point) const {
   return directionIn(*bullet_->parts[static_cast<std::size_t>(part)], point);
 }
@@ -483,7 +577,18 @@ Transform RigidBodyWorld::partPose(int part) const {
 }
 
 double RigidBodyWorld::lowestPoint() const {
-  return lowestPointOf(plan_.parts, bullet_->parts);
+  // the parts' own shapes, then the colliders they carry
+  double lowest = lowestPointOf(plan_.parts, bullet_->parts);
+  for (const ColliderPlan& collider : plan_.colliders) {
+    PartPlan shape;
+    shape.shape = collider.shape;
+    shape.size = collider.size;
+    const btTransform pose =
+        bullet_->parts[static_cast<std::size_t>(collider.part)]->getWorldTransform() *
+        btTransform(toBt(collider.pose.rotation), toBt(collider.pose.position));
+    lowest = std::min(lowest, pose.getOrigin().z() - reachDown(shape, pose.getBasis()));
+  }
+  return lowest;
 }
 
 Transform RigidBodyWorld::objectPose(int object) const {

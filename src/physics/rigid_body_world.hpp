@@ -10,6 +10,8 @@
 #include <array>
 #include <memory>
 
+class btCollisionShape;
+
 namespace cambrian {
 
 struct RigidBodyObjects;  // the Bullet objects, private to rigid_body_world.cpp
@@ -43,6 +45,8 @@ class RigidBodyWorld : public World {
   Vec3 partInertia(int part) const override;
   const std::vector<std::uint8_t>& contacts() override;
   const std::vector<std::uint8_t>& groundContacts() override;
+  const std::vector<std::pair<int, int>>& partContacts() override;
+  double largestJointError() const override;
   Vec3 directionInPart(int part, Vec3 point) const override;
   double lowestPoint() const override;
   Transform objectPose(int object) const override;
@@ -53,7 +57,9 @@ class RigidBodyWorld : public World {
 
  private:
   void build(double birth_height);
+  btCollisionShape* partShape(int part);
   void addJoints();
+  bool drivesJoint(const EffectorPlan& effector) const;
   void addHeldObjects();
   void release(std::span<const double> commands);
   void applyTorques(std::span<const double> commands);
@@ -70,6 +76,8 @@ class RigidBodyWorld : public World {
   std::vector<double> max_torque_;  // per part: its joint's torque limit
   std::vector<std::uint8_t> contact_;
   std::vector<std::uint8_t> ground_contact_;
+  std::vector<std::pair<int, int>> part_contacts_;  // partContacts()
+  int substeps_left_ = 1;  // the substeps left in this step, this one included
   std::vector<DragCoefficients> drag_;  // per part, then per object and held object: in a fluid
   std::size_t held_first_ = 0;          // the first held object's index among the free bodies
   std::vector<bool> released_;          // per held object: let go

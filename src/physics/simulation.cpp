@@ -39,6 +39,12 @@ Simulation::Simulation(const BodyPlan& plan, const ControllerPlan* controller,
   for (std::size_t i = 0; i < plan_.parts.size(); ++i)
     birth_position_[i] = world_->partPosition(static_cast<int>(i));
   previous_position_ = birth_position_;
+  if (settings_.max_angular_speed > 0) {
+    for (std::size_t i = 0; i < plan_.parts.size(); ++i)
+      previous_rotation_.push_back(world_->partPose(static_cast<int>(i)).rotation);
+  }
+  if (settings_.max_contact_rate >= 0)
+    hits_.assign(static_cast<std::size_t>(std::max(1.0, std::round(1 / settings_.time_step))), 0);
   for (std::size_t h = 0; h < plan_.held.size(); ++h)
     previous_held_.push_back(world_->heldPose(static_cast<int>(h)).position);
 
@@ -149,6 +155,23 @@ void Simulation::monitor() {
     }
   }
 
+  // a part spinning too fast, a joint come apart, parts hitting each other too often (the
+  // springy organisms' monitors)
+  if (!previous_rotation_.empty() && !watchSpin())
+    return;
+  if (settings_.max_joint_error > 0) {
+    const double error = world_->largestJointError();
+    if (error > settings_.max_joint_error) {
+      std::ostringstream message;
+      message << "a joint came " << error << " m apart (physics.max_joint_error "
+              << settings_.max_joint_error << ") at step " << steps_;
+      fail(EvalStatus::joint_error, message.str());
+      return;
+    }
+  }
+  if (!hits_.empty() && !watchHits())
+    return;
+
   // what the creature holds or has thrown: watched as a part is, except for the distance (it
   // may go as far as it is thrown)
   for (std::size_t h = 0; h < previous_held_.size(); ++h) {
@@ -158,6 +181,50 @@ void Simulation::monitor() {
     previous_held_[h] = position;
   }
   watchEnergy();
+}
+
+bool Simulation::watchSpin() {
+  // the angle each part turned through in the step, over the step
+  for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
+    const Quat rotation = world_->partPose(static_cast<int>(i)).rotation;
+    const Quat turn = conjugate(previous_rotation_[i]) * rotation;
+    const double angle =
+        2 * std::atan2(std::sqrt(turn.x * turn.x + turn.y * turn.y + turn.z * turn.z),
+                       std::abs(turn.w));
+    previous_rotation_[i] = rotation;
+    if (angle > settings_.max_angular_speed * settings_.time_step) {
+      std::ostringstream message;
+      message << "part " << i << " turned at " << angle / settings_.time_step
+              << " rad/s (physics.max_angular_speed " << settings_.max_angular_speed
+              << ") at step " << steps_;
+      fail(EvalStatus::exploded, message.str());
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Simulation::watchHits() {
+  // a hit: a pair of parts touching that did not touch after the step before; counted over the
+  // last simulated second (a ring of per-step counts)
+  const std::vector<std::pair<int, int>>& touching = world_->partContacts();
+  int hits = 0;
+  for (const auto& pair : touching)
+    hits += std::binary_search(touching_.begin(), touching_.end(), pair) ? 0 : 1;
+  touching_ = touching;
+  const std::size_t slot = static_cast<std::size_t>(steps_ % hits_.size());
+  hits_in_window_ += hits - hits_[slot];
+  hits_[slot] = hits;
+  const double window = static_cast<double>(hits_.size()) * settings_.time_step;
+  if (hits_in_window_ > settings_.max_contact_rate * window) {
+    std::ostringstream message;
+    message << "the parts hit each other " << hits_in_window_ << " times in the last " << window
+            << " s (physics.max_contact_rate " << settings_.max_contact_rate << " per s) at step "
+            << steps_;
+    fail(EvalStatus::self_contact, message.str());
+    return false;
+  }
+  return true;
 }
 
 void Simulation::watchEnergy() {

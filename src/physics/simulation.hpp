@@ -90,6 +90,8 @@ class Simulation {
   void monitor();
   bool watchStep(const char* what, std::size_t index, Vec3 position, Vec3 previous);
   void watchEnergy();
+  bool watchSpin();
+  bool watchHits();
   void fail(EvalStatus status, std::string message);
 
   const BodyPlan& plan_;
@@ -106,6 +108,10 @@ class Simulation {
   Vec3 light_;                   // light(), moveLight()
   std::vector<Vec3> birth_position_, previous_position_;
   std::vector<Vec3> previous_held_;  // each held object's position at the last step
+  std::vector<Quat> previous_rotation_;  // per part, when physics.max_angular_speed watches
+  std::vector<int> hits_;  // per step of the last second, when physics.max_contact_rate watches
+  int hits_in_window_ = 0;
+  std::vector<std::pair<int, int>> touching_;  // the parts touching after the step before
   double energy_scale_ = 0;
   double lowest_balance_ = 0;  // lowest energy minus work bound so far
   double unexplained_energy_ = 0;

@@ -16,6 +16,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cambrian {
@@ -67,6 +68,13 @@ class World {
   virtual const std::vector<std::uint8_t>& contacts() = 0;
   /// Per part, 1 when it touches the ground (plane or terrain) after the last step, else 0.
   virtual const std::vector<std::uint8_t>& groundContacts() = 0;
+  /// The pairs of the creature's own parts that touch each other after the last step, each
+  /// (lower part, higher part), in increasing order.
+  virtual const std::vector<std::pair<int, int>>& partContacts() = 0;
+  /// How far the joint that has come most apart after the last step is from holding, m: the
+  /// distance between its pivots on its two parts, less a slider's own travel (0 in a world
+  /// whose joints cannot part).
+  virtual double largestJointError() const = 0;
   /// The unit direction from part `part` towards the world point `point`, in the part's frame.
   virtual Vec3 directionInPart(int part, Vec3 point) const = 0;
   /// Height of the creature's lowest point above z = 0, m.

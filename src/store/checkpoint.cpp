@@ -226,7 +226,7 @@ Population fromColumnsV1(const ColumnsV1& c, std::uint64_t generation) {
   std::size_t next_name = 0, next_value = 0;
   return populationFrom(c, generation, forEach, [&](std::size_t k) {
     Outcome o;
-    if (c.status[k] > static_cast<std::uint8_t>(EvalStatus::failed))
+    if (c.status[k] >= kEvalStatusKinds)
       throw std::runtime_error("/population row " + std::to_string(k) + ": status out of range");
     o.fitness = c.fitness[k];
     o.status = static_cast<EvalStatus>(c.status[k]);

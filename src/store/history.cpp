@@ -129,7 +129,7 @@ std::vector<std::string> originNames() {
 
 std::vector<std::string> statusNames() {
   std::vector<std::string> names;
-  for (int i = 0; i <= static_cast<int>(EvalStatus::failed); ++i)
+  for (int i = 0; i < kEvalStatusKinds; ++i)
     names.push_back(statusName(static_cast<EvalStatus>(i)));
   return names;
 }
@@ -849,7 +849,7 @@ std::vector<Individual> HistoryReader::individuals() const {
     for (hsize_t i = 0; i < rows; ++i) {
       if (offset[i] > byte_count || size[i] > byte_count - offset[i])
         break;  // bytes of a row still being appended
-      if (origin[i] >= kOriginKinds || status[i] > static_cast<std::uint8_t>(EvalStatus::failed))
+      if (origin[i] >= kOriginKinds || status[i] >= kEvalStatusKinds)
         throw InputError(path_ + ": /individuals row " + std::to_string(i) +
                          ": operator or status out of range (corrupt history)");
       Individual row;
