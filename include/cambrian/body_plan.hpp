@@ -60,7 +60,9 @@ struct PartPlan {
   Vec3 pivot_in_child;                 ///< joint point in this part's frame
   Quat parent_to_child;                ///< this part's frame relative to the parent's frame
   std::array<Vec3, 3> axes{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  ///< in this part's frame
-  Vec3 joint_limit;  ///< symmetric limit per degree of freedom, radians (prismatic: m)
+  /// symmetric limit per degree of freedom, radians (prismatic: m); infinite: none (the rigid-body
+  /// world only)
+  Vec3 joint_limit;
   /// passive damping per degree of freedom, N m s / rad (prismatic: N s / m); negative: the
   /// world's (physics.joint_damping)
   Vec3 joint_damping{-1, -1, -1};

@@ -3,6 +3,7 @@
 #include "cambrian/error.hpp"
 
 #include "encodings/directed_graph/encoding.hpp"
+#include "encodings/springy/encoding.hpp"
 
 #include <cstring>
 
@@ -10,8 +11,10 @@ namespace cambrian {
 
 const std::vector<const Encoding*>& encodings() {
   static const graph::DirectedGraphEncoding directed_graph;
+  static const springy::SpringyEncoding springy;
   static const std::vector<const Encoding*> registered = {
       &directed_graph,  // Sims 1994, Chaumont et al. 2007
+      &springy,         // Krčah 2008
   };
   return registered;
 }

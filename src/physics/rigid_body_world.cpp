@@ -274,7 +274,10 @@ void RigidBodyWorld::addJoints() {
     const int dofs = degreesOfFreedom(joint);
     for (int d = 0; d < dofs; ++d) {
       const int axis = constraintAxis(joint, d);
-      constraint->setLimit(axis, -limit[d], limit[d]);
+      if (std::isinf(limit[d]))
+        constraint->setLimit(axis, 1, -1);  // Bullet's free axis: no limit rows at all
+      else
+        constraint->setLimit(axis, -limit[d], limit[d]);
       const double own = damping[d] < 0 ? physics_.joint_damping : damping[d];
       if (physics_.implicit_damping && own > 0) {
         constraint->enableSpring(axis, true);

@@ -184,8 +184,11 @@ void Simulation::monitor() {
 }
 
 bool Simulation::watchSpin() {
-  // the angle each part turned through in the step, over the step
+  // the angle each part turned through in the step, over the step; parts without a collider of
+  // their own (a springy organism's proxies, massive points of its muscles) are not watched
   for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
+    if (!plan_.parts[i].solid)
+      continue;
     const Quat rotation = world_->partPose(static_cast<int>(i)).rotation;
     const Quat turn = conjugate(previous_rotation_[i]) * rotation;
     const double angle =

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
 
@@ -22,12 +23,14 @@ struct Body {
 struct BodyJoint {
   int a = 0, b = 0;
   JointType type = JointType::fixed;
-  int tube = 0;     // the tube it belongs to (a proxy's universal joint: the proxy's tube)
+  int tube = 0;     // the tube it belongs to (a proxy's ball joint: the proxy's tube)
   int muscle = -1;  // a slider's muscle (its index among the muscles)
 };
 
 // m a slider's stops lie beyond the muscle's range
 constexpr double kStopMargin = 0.05;
+// no limit on a degree of freedom
+constexpr double kFree = std::numeric_limits<double>::infinity();
 
 // Algorithms B.1 and B.2: the bodies and joints, with the bodies that carry each tube
 struct Layout {
@@ -60,7 +63,7 @@ Layout layOut(const Organism& organism) {
     }
     layout.bodies.push_back({node, true});
     const int proxy = static_cast<int>(layout.bodies.size()) - 1;
-    layout.joints.push_back({node, proxy, JointType::universal, tube});
+    layout.joints.push_back({node, proxy, JointType::spherical, tube});
     return proxy;
   };
   int muscle = 0;
@@ -109,7 +112,7 @@ BodyCounts countBodies(const Organism& organism) {
   for (const Body& body : layout.bodies)
     (body.proxy ? counts.proxies : counts.main_bodies) += 1;
   for (const BodyJoint& joint : layout.joints) {
-    counts.universal_joints += joint.type == JointType::universal ? 1 : 0;
+    counts.ball_joints += joint.type == JointType::spherical ? 1 : 0;
     counts.sliders += joint.type == JointType::prismatic ? 1 : 0;
     counts.fixed_joints += joint.type == JointType::fixed ? 1 : 0;
   }
@@ -127,11 +130,11 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
     ++shares[body.node];
 
   // a spanning tree holding every slider (they share no body, so they make no cycle), then the
-  // universal joints, then the rods; the other joints close loops
+  // ball joints, then the rods; the other joints close loops
   std::vector<int> order(layout.joints.size());
   std::iota(order.begin(), order.end(), 0);
   auto rank = [](JointType type) {
-    return type == JointType::prismatic ? 0 : type == JointType::universal ? 1 : 2;
+    return type == JointType::prismatic ? 0 : type == JointType::spherical ? 1 : 2;
   };
   std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
     return rank(layout.joints[i].type) < rank(layout.joints[j].type);
@@ -211,11 +214,8 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
         std::rotate(part.axes.begin(), part.axes.begin() + 2, part.axes.end());
         part.joint_limit = {travel(organism.tubes[joint.tube]), 0, 0};
         part.strength = settings.muscle_force;
-      } else if (joint.type == JointType::universal) {
-        // free about the two axes across the tube, no twist about it; a turning limit of pi is
-        // none
-        part.axes = acrossFrame(unitAlong(organism.tubes[joint.tube]));
-        part.joint_limit = {std::numbers::pi, std::numbers::pi, 0};
+      } else if (joint.type == JointType::spherical) {
+        part.joint_limit = {kFree, kFree, kFree};
       } else {
         part.pivot_in_parent = apart * 0.5;
         part.pivot_in_child = apart * -0.5;
@@ -236,10 +236,8 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
     const Vec3 apart = centre(joint.b) - centre(joint.a);
     loop.pivot_in_a = apart * 0.5;
     loop.pivot_in_b = apart * -0.5;
-    if (joint.type == JointType::universal) {
-      loop.axes = acrossFrame(unitAlong(organism.tubes[joint.tube]));
-      loop.joint_limit = {std::numbers::pi, std::numbers::pi, 0};
-    }
+    if (joint.type == JointType::spherical)
+      loop.joint_limit = {kFree, kFree, kFree};
     plan.loops.push_back(loop);
   }
 
