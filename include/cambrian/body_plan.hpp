@@ -157,9 +157,9 @@ struct BodyPlan {
   std::vector<LoopJoint> loops;
   std::vector<SensorPlan> sensors;
   std::vector<EffectorPlan> effectors;
-  std::vector<HeldObject> held;  ///< objects held at birth (a catapult's projectile)
+  std::vector<HeldObject> held;         ///< objects held at birth (a catapult's projectile)
   std::vector<ColliderPlan> colliders;  ///< colliders parts carry besides their own shapes
-  bool truncated = false;        ///< development stopped at its part limit
+  bool truncated = false;               ///< development stopped at its part limit
 
   /// Joints of the tree plus loop joints.
   int jointCount() const;

@@ -12,8 +12,8 @@ std::unique_ptr<Controller> LengthSinusoidsPlan::build(double time_step, std::si
                                                        std::size_t effectors) const {
   if (effectors != sinusoids.size())
     throw Error(ExitCode::failure, "a length controller of " + std::to_string(sinusoids.size()) +
-                                        " sinusoids cannot drive " + std::to_string(effectors) +
-                                        " effectors");
+                                       " sinusoids cannot drive " + std::to_string(effectors) +
+                                       " effectors");
   return std::make_unique<LengthSinusoids>(sinusoids, time_step);
 }
 

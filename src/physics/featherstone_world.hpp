@@ -78,7 +78,7 @@ class FeatherstoneWorld : public World {
   std::vector<std::array<int, 3>> dof_link_;
   std::vector<double> max_torque_;
   std::vector<std::uint8_t> contact_;
-  std::vector<std::uint8_t> ground_contact_;  // groundContacts()
+  std::vector<std::uint8_t> ground_contact_;        // groundContacts()
   std::vector<std::pair<int, int>> part_contacts_;  // partContacts()
   std::vector<int> part_link_;          // per part: the Bullet link carrying it (-1: the base)
   std::vector<DragCoefficients> drag_;  // per part, then per object and held object: in a fluid

@@ -195,9 +195,9 @@ void RigidBodyWorld::build(double birth_height) {
   // the parts, each with its material
   for (const ColliderPlan& collider : plan_.colliders) {
     if (collider.part < 0 || collider.part >= part_count) {
-      refuse(EvalStatus::invalid_body,
-             "a collider is carried by part " + std::to_string(collider.part) + " of " +
-                 std::to_string(part_count));
+      refuse(EvalStatus::invalid_body, "a collider is carried by part " +
+                                           std::to_string(collider.part) + " of " +
+                                           std::to_string(part_count));
       return;
     }
   }
@@ -319,8 +319,8 @@ void RigidBodyWorld::addJoints() {
   }
   // motors: on every position effector's axis, and on the joint effectors' when saturated
   for (const EffectorPlan& effector : plan_.effectors) {
-    if (!drivesJoint(effector) || (effector.kind == EffectorKind::joint &&
-                                   physics_.actuation != Actuation::saturated_motor))
+    if (!drivesJoint(effector) ||
+        (effector.kind == EffectorKind::joint && physics_.actuation != Actuation::saturated_motor))
       continue;
     const PartPlan& part = plan_.parts[static_cast<std::size_t>(effector.part)];
     b.joints[effector.part]->enableMotor(constraintAxis(part.joint, effector.dof), true);
@@ -330,7 +330,8 @@ void RigidBodyWorld::addJoints() {
 bool RigidBodyWorld::drivesJoint(const EffectorPlan& effector) const {
   return (effector.kind == EffectorKind::joint || effector.kind == EffectorKind::position) &&
          effector.part > 0 && effector.part < static_cast<int>(plan_.parts.size()) &&
-         effector.dof < degreesOfFreedom(plan_.parts[static_cast<std::size_t>(effector.part)].joint);
+         effector.dof <
+             degreesOfFreedom(plan_.parts[static_cast<std::size_t>(effector.part)].joint);
 }
 
 void RigidBodyWorld::addHeldObjects() {
@@ -460,8 +461,7 @@ void RigidBodyWorld::step(std::span<const double> commands) {
         const EffectorPlan& effector = plan_.effectors[e];
         if (!drivesJoint(effector))
           continue;
-        const double share =
-            effector.kind == EffectorKind::position ? 1.0 : std::abs(commands[e]);
+        const double share = effector.kind == EffectorKind::position ? 1.0 : std::abs(commands[e]);
         work_bound_ += share * max_torque_[effector.part] *
                        std::abs(jointSpeed(effector.part, effector.dof)) * substep;
       }
@@ -549,10 +549,8 @@ double RigidBodyWorld::largestJointError() const {
   // the two frames' origins, less a slider's travel along its axis
   double largest = 0;
   auto measure = [&largest](const btGeneric6DofSpring2Constraint& joint, JointType type) {
-    const btTransform a =
-        joint.getRigidBodyA().getWorldTransform() * joint.getFrameOffsetA();
-    const btTransform c =
-        joint.getRigidBodyB().getWorldTransform() * joint.getFrameOffsetB();
+    const btTransform a = joint.getRigidBodyA().getWorldTransform() * joint.getFrameOffsetA();
+    const btTransform c = joint.getRigidBodyB().getWorldTransform() * joint.getFrameOffsetB();
     btVector3 apart = c.getOrigin() - a.getOrigin();
     if (type == JointType::prismatic) {
       const btVector3 axis = a.getBasis().getColumn(0);

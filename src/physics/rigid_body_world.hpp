@@ -77,7 +77,7 @@ class RigidBodyWorld : public World {
   std::vector<std::uint8_t> contact_;
   std::vector<std::uint8_t> ground_contact_;
   std::vector<std::pair<int, int>> part_contacts_;  // partContacts()
-  int substeps_left_ = 1;  // the substeps left in this step, this one included
+  int substeps_left_ = 1;               // the substeps left in this step, this one included
   std::vector<DragCoefficients> drag_;  // per part, then per object and held object: in a fluid
   std::size_t held_first_ = 0;          // the first held object's index among the free bodies
   std::vector<bool> released_;          // per held object: let go

@@ -198,8 +198,8 @@ bool Simulation::watchSpin() {
     if (angle > settings_.max_angular_speed * settings_.time_step) {
       std::ostringstream message;
       message << "part " << i << " turned at " << angle / settings_.time_step
-              << " rad/s (physics.max_angular_speed " << settings_.max_angular_speed
-              << ") at step " << steps_;
+              << " rad/s (physics.max_angular_speed " << settings_.max_angular_speed << ") at step "
+              << steps_;
       fail(EvalStatus::exploded, message.str());
       return false;
     }

@@ -107,7 +107,7 @@ class Simulation {
   bool reads_contacts_ = false;  // what the sensors need of the world
   Vec3 light_;                   // light(), moveLight()
   std::vector<Vec3> birth_position_, previous_position_;
-  std::vector<Vec3> previous_held_;  // each held object's position at the last step
+  std::vector<Vec3> previous_held_;      // each held object's position at the last step
   std::vector<Quat> previous_rotation_;  // per part, when physics.max_angular_speed watches
   std::vector<int> hits_;  // per step of the last second, when physics.max_contact_rate watches
   int hits_in_window_ = 0;

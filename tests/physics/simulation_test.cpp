@@ -372,3 +372,39 @@ TEST(Simulation, PhotosensorsSeeTheLightFromTheirPart) {
 
 }  // namespace
 }  // namespace cambrian
+
+namespace cambrian {
+namespace {
+
+// a block on a vertical slider falls onto a block fixed beside it on the same root: one hit
+// between the creature's own parts, over a limit of 0 per second and within one of 5
+TEST(Simulation, PartsHittingEachOtherTooOftenGiveSelfContact) {
+  BodyPlan plan;
+  plan.parts.push_back(test::box({1, 1, 0.1}, {0, 0, 0}));
+  PartPlan falling = test::box({0.2, 0.2, 0.2}, {0.3, 0, 0.55}, 0);
+  falling.joint = JointType::prismatic;
+  falling.axes = {Vec3{0, 0, 1}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+  falling.pivot_in_parent = {0.3, 0, 0.55};
+  falling.joint_limit = {1, 0, 0};
+  plan.parts.push_back(falling);
+  PartPlan fixed = test::box({0.2, 0.2, 0.2}, {0.3, 0, 0.15}, 0);
+  fixed.pivot_in_parent = {0.3, 0, 0.15};
+  plan.parts.push_back(fixed);
+  PhysicsSettings physics;
+  physics.world = "rigid_bodies";
+  physics.max_contact_rate = 0;
+  Simulation strict(plan, nullptr, Environment{}, physics);
+  ASSERT_EQ(strict.status(), EvalStatus::ok) << strict.message();
+  for (int s = 0; s < 300; ++s)
+    strict.step(false);
+  EXPECT_EQ(strict.status(), EvalStatus::self_contact);
+  EXPECT_NE(strict.message().find("hit each other 1 times"), std::string::npos) << strict.message();
+  physics.max_contact_rate = 5;
+  Simulation lenient(plan, nullptr, Environment{}, physics);
+  for (int s = 0; s < 300; ++s)
+    lenient.step(false);
+  EXPECT_EQ(lenient.status(), EvalStatus::ok) << lenient.message();
+}
+
+}  // namespace
+}  // namespace cambrian

@@ -175,8 +175,8 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
   auto travel = [&](const Tube& tube) {
     const double initial = initialLength(organism, tube);
     const Muscle& m = tube.muscle;
-    const double range = std::max(m.rest_length + m.amplitude - initial,
-                                  initial - (m.rest_length - m.amplitude));
+    const double range =
+        std::max(m.rest_length + m.amplitude - initial, initial - (m.rest_length - m.amplitude));
     return m.amplitude > 0 ? range + kStopMargin : 0.0;
   };
   auto unitAlong = [&](const Tube& tube) {
@@ -265,10 +265,10 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
       continue;
     }
     const Muscle& m = tube.muscle;
-    const double shortest = m.amplitude > 0 && m.frequency > 0 ? m.rest_length - m.amplitude
-                                                               : length;
-    const double longest = m.amplitude > 0 && m.frequency > 0 ? m.rest_length + m.amplitude
-                                                              : length;
+    const double shortest =
+        m.amplitude > 0 && m.frequency > 0 ? m.rest_length - m.amplitude : length;
+    const double longest =
+        m.amplitude > 0 && m.frequency > 0 ? m.rest_length + m.amplitude : length;
     const double reach = std::min(shortest, 0.5 * longest);
     carry(layout.tube_bodies[t][0], {}, along, reach, tube.a, tube.b);
     carry(layout.tube_bodies[t][1], {}, along * -1.0, reach, tube.a, tube.b);

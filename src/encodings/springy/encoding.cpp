@@ -78,18 +78,15 @@ void SpringyEncoding::declareSettings(SettingsSchema& s) {
                "must be > 0 and finite");
   s.add("springy.max_frequency", o.limits.max_frequency,
         "the highest muscle frequency, Hz (the thesis' f_max, 2)")
-      .require(
-          [&o] { return o.limits.max_frequency > 0 && std::isfinite(o.limits.max_frequency); },
-          "must be > 0 and finite");
+      .require([&o] { return o.limits.max_frequency > 0 && std::isfinite(o.limits.max_frequency); },
+               "must be > 0 and finite");
   s.add("springy.evolve_frequency", o.evolve_frequency,
         "false: every muscle has springy.frozen_frequency, never drawn or mutated (the thesis' "
         "'Evolve frequency = no')");
   s.add("springy.frozen_frequency", o.frozen_frequency,
         "the one frequency of every muscle when frequencies do not evolve, Hz (Exp. 6: 1)")
       .require(
-          [&o] {
-            return o.frozen_frequency >= 0 && o.frozen_frequency <= o.limits.max_frequency;
-          },
+          [&o] { return o.frozen_frequency >= 0 && o.frozen_frequency <= o.limits.max_frequency; },
           "must be in [0, springy.max_frequency]");
   s.addChoice("springy.mutation", o.mutation,
               {{"atomic", MuscleMutation::atomic},

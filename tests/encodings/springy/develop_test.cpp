@@ -136,8 +136,7 @@ TEST(SpringyBody, RodsKeepTheirLengthsWhileTheMusclesMove) {
 // with its muscles holding their initial lengths, an organism on the ground does not move
 TEST(SpringyBody, APassiveOrganismDoesNotMove) {
   const Creature creature = developOrganism(test::pyramid(), BodySettings{});
-  Simulation simulation(creature.body, creature.controller.get(), Environment{},
-                        thesisPhysics());
+  Simulation simulation(creature.body, creature.controller.get(), Environment{}, thesisPhysics());
   ASSERT_EQ(simulation.status(), EvalStatus::ok) << simulation.message();
   simulation.step(false);
   const Vec3 start = simulation.centerOfMass();
@@ -182,6 +181,17 @@ TEST(SpringyBody, TheMonitorsGiveTheirStatuses) {
     spin.step(true);
   EXPECT_EQ(spin.status(), EvalStatus::exploded) << spin.message();
   EXPECT_NE(spin.message().find("physics.max_angular_speed"), std::string::npos);
+}
+
+// the Featherstone world builds no closed loops, carried colliders or position effectors: it
+// refuses an organism and names the world that builds it
+TEST(SpringyBody, TheFeatherstoneWorldRefusesOrganisms) {
+  const Creature lone = developOrganism(test::screenshotMuscle(), BodySettings{});
+  PhysicsSettings physics = thesisPhysics();
+  physics.world = "featherstone";
+  Simulation simulation(lone.body, lone.controller.get(), Environment{}, physics);
+  EXPECT_EQ(simulation.status(), EvalStatus::invalid_body);
+  EXPECT_NE(simulation.message().find("rigid_bodies"), std::string::npos) << simulation.message();
 }
 
 }  // namespace

@@ -17,7 +17,8 @@
 namespace cambrian::springy {
 namespace {
 
-const std::string kSnake = std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/springy/snake.organism";
+const std::string kSnake =
+    std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/springy/snake.organism";
 
 // the registered encoding's copy, configured by `settings` (key, value pairs)
 std::unique_ptr<Encoding> configured(
@@ -75,10 +76,10 @@ TEST(SpringyEncoding, RandomGenomesKeepTheMorphologyAndFrozenFrequencyHolds) {
   Rng rng(7, RngPurpose::test);
   Genotype child = a;
   for (int k = 0; k < 50; ++k) {
-    child = k % 2 == 0 ? encoding->mutate(child, 0.1, rng)
-                       : encoding->combine(Variation::crossover, child,
-                                           encoding->random(7, 1, static_cast<std::uint64_t>(k)),
-                                           rng);
+    child = k % 2 == 0
+                ? encoding->mutate(child, 0.1, rng)
+                : encoding->combine(Variation::crossover, child,
+                                    encoding->random(7, 1, static_cast<std::uint64_t>(k)), rng);
     ASSERT_NO_THROW(encoding->validate(child));
     for (const Tube& tube : organismOf(child).tubes)
       if (tube.kind == TubeKind::muscle)
