@@ -81,16 +81,19 @@ TEST(SpringyEncoding, RandomGenomesKeepTheMorphologyAndFrozenFrequencyHolds) {
                 : encoding->combine(Variation::crossover, child,
                                     encoding->random(7, 1, static_cast<std::uint64_t>(k)), rng);
     ASSERT_NO_THROW(encoding->validate(child));
-    for (const Tube& tube : organismOf(child).tubes)
-      if (tube.kind == TubeKind::muscle)
+    for (const Tube& tube : organismOf(child).tubes) {
+      if (tube.kind == TubeKind::muscle) {
         EXPECT_EQ(tube.muscle.frequency, 1.0);
+      }
+    }
   }
   EXPECT_TRUE(sameMorphology(organismOf(child), springy.organism_template));
   // a muscle at another frequency breaks the frozen rule
   Organism other = organismOf(child);
-  for (Tube& tube : other.tubes)
+  for (Tube& tube : other.tubes) {
     if (tube.kind == TubeKind::muscle && tube.muscle.amplitude > 0)
       tube.muscle.frequency = 0.5;
+  }
   EXPECT_THROW(encoding->validate(makeGenotype(other)), GenomeError);
   // the springy organisms have mutation and crossover only
   EXPECT_TRUE(encoding->supports(Variation::crossover));
