@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace cambrian {
@@ -34,6 +36,19 @@ TEST(Outcome, MeasuresByName) {
   EXPECT_TRUE(std::isnan(o.measure("absent")));
   EXPECT_STREQ(statusName(EvalStatus::self_penetration), "self_penetration");
   EXPECT_STREQ(statusName(static_cast<EvalStatus>(99)), "unknown");
+}
+
+// every status has a name of its own; the count ends the list
+TEST(Outcome, EveryStatusHasItsOwnName) {
+  std::vector<std::string> names;
+  for (int i = 0; i < kEvalStatusKinds; ++i) {
+    const std::string name = statusName(static_cast<EvalStatus>(i));
+    EXPECT_NE(name, "unknown") << i;
+    EXPECT_EQ(std::count(names.begin(), names.end(), name), 0) << name;
+    names.push_back(name);
+  }
+  EXPECT_EQ(names.back(), "self_contact");
+  EXPECT_STREQ(statusName(static_cast<EvalStatus>(kEvalStatusKinds)), "unknown");
 }
 
 TEST(Outcome, ByteFormRoundTripsEveryFieldBitForBit) {
