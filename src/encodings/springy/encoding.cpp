@@ -10,6 +10,8 @@
 #include "encodings/springy/rules.hpp"
 
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 namespace cambrian::springy {
 
@@ -25,6 +27,36 @@ const SpringyEncoding& prototype() {
 constexpr std::size_t kMaxOrganismFile = 1 << 22;
 
 }  // namespace
+
+Organism builtInPyramid() {
+  Organism o;
+  // (the file's six digits)
+  const std::pair<const char*, Vec3> nodes[] = {{"a", {0, 0, 0.1}},
+                                                {"b", {1, 0, 0.1}},
+                                                {"c", {0.5, 0.866025, 0.1}},
+                                                {"top", {0.5, 0.288675, 0.9}}};
+  for (const auto& [name, position] : nodes) {
+    Node node;
+    node.name = name;
+    node.position = position;
+    o.nodes.push_back(node);
+  }
+  const std::tuple<const char*, int, int, TubeKind> tubes[] = {
+      {"ab", 0, 1, TubeKind::rod},     {"bc", 1, 2, TubeKind::rod},
+      {"ca", 2, 0, TubeKind::rod},     {"m_a", 3, 0, TubeKind::muscle},
+      {"m_b", 3, 1, TubeKind::muscle}, {"m_c", 3, 2, TubeKind::muscle}};
+  for (const auto& [name, a, b, kind] : tubes) {
+    Tube tube;
+    tube.name = name;
+    tube.a = a;
+    tube.b = b;
+    tube.kind = kind;
+    if (kind == TubeKind::muscle)
+      tube.muscle.rest_length = initialLength(o, tube);
+    o.tubes.push_back(tube);
+  }
+  return o;
+}
 
 Genotype makeGenotype(Organism organism) {
   return Genotype(prototype(), std::make_shared<OrganismData>(std::move(organism)));
@@ -51,7 +83,7 @@ std::string SpringyEncoding::textHeader() const {
 void SpringyEncoding::readTemplate() {
   // the organism file of springy.organism, read when the key is set and checked by the rules
   // with its muscles as written (muscles without parameters rest at their initial lengths)
-  organism_template = Organism{};
+  organism_template = builtInPyramid();
   if (organism_path.empty())
     return;
   const SmallFile file = readSmallFile(organism_path, kMaxOrganismFile);
@@ -71,7 +103,8 @@ void SpringyEncoding::declareSettings(SettingsSchema& s) {
   s.describeSection("springy", "[springy] the springy organisms (genome.encoding = springy)");
   s.add("springy.organism", organism_path,
         "the organism file whose morphology a springy run evolves (jobs/creatures/springy/); its "
-        "muscles' parameters are drawn anew for every random genome");
+        "muscles' parameters are drawn anew for every random genome (empty: a built-in copy of "
+        "jobs/creatures/springy/pyramid.organism)");
   s.add("springy.max_length", o.limits.max_length,
         "the longest a muscle may become, m (the thesis' C_max, 2)")
       .require([&o] { return o.limits.max_length > 0 && std::isfinite(o.limits.max_length); },
@@ -129,10 +162,6 @@ void SpringyEncoding::declareSettings(SettingsSchema& s) {
 
 Genotype SpringyEncoding::random(std::uint64_t seed, std::uint64_t generation,
                                  std::uint64_t individual) const {
-  if (organism_template.nodes.empty())
-    throw ConfigError(
-        "genome.encoding = springy: springy.organism names no organism file (the morphology "
-        "the run evolves)");
   Rng rng(seed, RngPurpose::random_genome, generation, individual);
   return makeGenotype(randomControl(organism_template, operators, rng));
 }

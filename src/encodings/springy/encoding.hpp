@@ -17,6 +17,10 @@ struct OrganismData : GenomeData {
   Organism organism;
 };
 
+/// The morphology of a run that names no organism file: the Pyramid of
+/// jobs/creatures/springy/pyramid.organism, its muscles resting at their initial lengths.
+Organism builtInPyramid();
+
 /// `organism` as a genotype of the springy encoding.
 Genotype makeGenotype(Organism organism);
 /// The organism of a springy genotype; throws GenomeError for another encoding's.
@@ -53,8 +57,8 @@ class SpringyEncoding : public Encoding {
 
   /// springy.organism: the organism file whose morphology the run evolves ("": none)
   std::string organism_path;
-  /// The organism read from organism_path (no nodes until it is read).
-  Organism organism_template;
+  /// The organism read from organism_path, or without one the built-in Pyramid.
+  Organism organism_template = builtInPyramid();
   MuscleOperatorSettings operators;
   BodySettings body;
 

@@ -38,8 +38,9 @@ TEST(SpringyEncoding, IsRegisteredByNameAndTag) {
   EXPECT_EQ(encodingForTag(kOrganismTag), &encoding);
 }
 
-// springy.organism is read when the settings are checked; a missing file names the key
-TEST(SpringyEncoding, TheOrganismFileIsReadWithTheSettings) {
+// springy.organism is read when the settings are checked; a missing file names the key; no
+// file is the Pyramid
+TEST(SpringyEncoding, TheOrganismFileIsReadWithTheSettingsElseTheBuiltInPyramid) {
   auto encoding = configured({{"springy.organism", kSnake}});
   const auto& springy = dynamic_cast<const SpringyEncoding&>(*encoding);
   EXPECT_EQ(springy.organism_template.nodes.size(), 8u);
@@ -51,14 +52,14 @@ TEST(SpringyEncoding, TheOrganismFileIsReadWithTheSettings) {
               std::string::npos)
         << e.what();
   }
-  // without a file there is no random genome, and the message says which key to set
+  // without a file, the built-in Pyramid: the same organism as its file
   auto bare = configured({});
-  try {
-    bare->random(1, 0, 0);
-    FAIL() << "a random genome without an organism file";
-  } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("springy.organism"), std::string::npos) << e.what();
-  }
+  const std::string pyramid =
+      std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/creatures/springy/pyramid.organism";
+  auto from_file = configured({{"springy.organism", pyramid}});
+  EXPECT_EQ(dynamic_cast<const SpringyEncoding&>(*bare).organism_template,
+            dynamic_cast<const SpringyEncoding&>(*from_file).organism_template);
+  EXPECT_EQ(bare->random(1, 0, 0), from_file->random(1, 0, 0));
 }
 
 // random genomes: the template's morphology, valid, a pure function of (seed, generation,
