@@ -23,8 +23,7 @@ struct Body {
 struct BodyJoint {
   int a = 0, b = 0;
   JointType type = JointType::fixed;
-  int tube = 0;     // the tube it belongs to (a proxy's ball joint: the proxy's tube)
-  int muscle = -1;  // a slider's muscle (its index among the muscles)
+  int tube = 0;  // the tube it belongs to (a proxy's ball joint: the proxy's tube)
 };
 
 // m a slider's stops lie beyond the muscle's range
@@ -66,13 +65,12 @@ Layout layOut(const Organism& organism) {
     layout.joints.push_back({node, proxy, JointType::spherical, tube});
     return proxy;
   };
-  int muscle = 0;
   for (std::size_t t = 0; t < organism.tubes.size(); ++t) {
     const Tube& tube = organism.tubes[t];
     if (tube.kind != TubeKind::muscle)
       continue;
     const int a = attach(tube.a, static_cast<int>(t)), b = attach(tube.b, static_cast<int>(t));
-    layout.joints.push_back({a, b, JointType::prismatic, static_cast<int>(t), muscle++});
+    layout.joints.push_back({a, b, JointType::prismatic, static_cast<int>(t)});
     layout.tube_bodies[t] = {a, b};
   }
   return layout;
@@ -96,6 +94,11 @@ std::array<Vec3, 3> acrossFrame(Vec3 along) {
   Vec3 first = cross(helper, along);
   first = first * (1 / norm(first));
   return {first, cross(along, first), along};
+}
+
+// whether a muscle's length changes (A > 0 and f > 0); one that does not keeps its initial length
+bool moves(const Muscle& muscle) {
+  return muscle.amplitude > 0 && muscle.frequency > 0;
 }
 
 int findRoot(std::vector<int>& parent, int i) {
@@ -245,13 +248,13 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
   // two halves, one on each of its bodies, from the node's centre towards the other node as far
   // as the muscle's shortest length allows without passing the other node's centre (the halves
   // overlap while the muscle is short; past twice its shortest length a gap opens between them)
-  auto carry = [&](int body, Vec3 from, Vec3 along, double reach, int tube_a, int tube_b) {
+  auto carry = [&](int body, Vec3 along, double reach, int tube_a, int tube_b) {
     ColliderPlan collider;
     collider.part = part_of[body];
     collider.shape = PartShape::capsule;
     collider.size = {reach + organism.tube_diameter, organism.tube_diameter,
                      organism.tube_diameter};
-    collider.pose.position = from + along * (0.5 * reach);
+    collider.pose.position = along * (0.5 * reach);
     collider.pose.rotation = turnXOnto(along);
     collider.groups = {tube_a, tube_b};
     plan.colliders.push_back(collider);
@@ -261,17 +264,15 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
     const Vec3 along = unitAlong(tube);
     const double length = initialLength(organism, tube);
     if (tube.kind == TubeKind::rod) {
-      carry(tube.a, {}, along, length, tube.a, tube.b);
+      carry(tube.a, along, length, tube.a, tube.b);
       continue;
     }
     const Muscle& m = tube.muscle;
-    const double shortest =
-        m.amplitude > 0 && m.frequency > 0 ? m.rest_length - m.amplitude : length;
-    const double longest =
-        m.amplitude > 0 && m.frequency > 0 ? m.rest_length + m.amplitude : length;
+    const double shortest = moves(m) ? m.rest_length - m.amplitude : length;
+    const double longest = moves(m) ? m.rest_length + m.amplitude : length;
     const double reach = std::min(shortest, 0.5 * longest);
-    carry(layout.tube_bodies[t][0], {}, along, reach, tube.a, tube.b);
-    carry(layout.tube_bodies[t][1], {}, along * -1.0, reach, tube.a, tube.b);
+    carry(layout.tube_bodies[t][0], along, reach, tube.a, tube.b);
+    carry(layout.tube_bodies[t][1], along * -1.0, reach, tube.a, tube.b);
   }
 
   // a position effector per muscle on its slider, the child of the two bodies, and the
@@ -282,12 +283,11 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
       continue;
     const Tube& tube = organism.tubes[joint.tube];
     const double initial = initialLength(organism, tube);
-    const bool moves = tube.muscle.amplitude > 0 && tube.muscle.frequency > 0;
     plan.effectors.push_back(
         {std::max(part_of[joint.a], part_of[joint.b]), 0, EffectorKind::position});
     LengthSinusoid sinusoid;
-    sinusoid.middle = moves ? tube.muscle.rest_length : initial;
-    sinusoid.amplitude = moves ? tube.muscle.amplitude : 0;
+    sinusoid.middle = moves(tube.muscle) ? tube.muscle.rest_length : initial;
+    sinusoid.amplitude = moves(tube.muscle) ? tube.muscle.amplitude : 0;
     sinusoid.angular_frequency = 2 * std::numbers::pi * tube.muscle.frequency;
     sinusoid.phase = musclePhase(tube.muscle, initial);
     sinusoid.zero = initial;

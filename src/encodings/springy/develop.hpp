@@ -16,8 +16,7 @@ struct BodySettings {
   double friction = 1000;     ///< the nodes' and tubes' Coulomb coefficient (the thesis' "mu 1000")
 };
 
-/// The bodies of an organism before they become parts: which node each belongs to, and whether
-/// it is the node's main body or a proxy.
+/// How many bodies and joints of each kind Algorithm B.1 makes of an organism.
 struct BodyCounts {
   int main_bodies = 0, proxies = 0, ball_joints = 0, sliders = 0, fixed_joints = 0;
 };
