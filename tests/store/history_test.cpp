@@ -355,6 +355,55 @@ TEST(History, AReaderThatOpenedItBetweenGenerationsReadsOnWhenTheWriterGoesOn) {
   EXPECT_EQ(HistoryReader(path).generations().size(), 4u);
 }
 
+TEST(History, EveryOpenSucceedsWhileTheWriterTakesTheFileUpAndPutsItDown) {
+  // a writer that opens and closes the file every generation, as fast as it can, and a reader
+  // that opens it over and over meanwhile: no open may fail (a live report once failed so)
+  std::string path = tempPath("busy.h5");
+  int to_parent[2];
+  ASSERT_EQ(pipe(to_parent), 0);
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    close(to_parent[0]);
+    char token = 'x';
+    try {
+      HistoryWriter writer(path, makeAttributes(), kMeasures);
+      writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
+      writer.completeLastGeneration(GenerationRecord{});
+      if (write(to_parent[1], &token, 1) != 1)
+        _exit(4);
+      for (int g = 1; g < 300; ++g) {
+        writer.appendGeneration(makeRows(static_cast<std::uint64_t>(g), 5), makeGeneration(g));
+        writer.completeLastGeneration(GenerationRecord{});
+      }
+      writer.close();
+      _exit(0);
+    } catch (...) {
+      _exit(3);
+    }
+  }
+  close(to_parent[1]);
+  char token = 0;
+  ASSERT_EQ(read(to_parent[0], &token, 1), 1);
+  int opened = 0;
+  std::vector<std::string> failures;
+  int status = 0;
+  while (waitpid(child, &status, WNOHANG) == 0) {
+    try {
+      HistoryReader reader(path, HistoryReadMode::this_process_only);
+      EXPECT_GE(reader.generations().size(), 1u);
+      ++opened;
+    } catch (const Error& e) {
+      failures.push_back(e.what());
+    }
+  }
+  close(to_parent[0]);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  EXPECT_GT(opened, 0);
+  EXPECT_TRUE(failures.empty()) << failures.size() << " of " << opened + failures.size()
+                                << " opens failed, the first: " << failures.front();
+}
+
 // the output and exit code of a shell command
 std::pair<int, std::string> shell(const std::string& command) {
   std::string output;
