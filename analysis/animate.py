@@ -72,6 +72,21 @@ def load_trajectory(path):
             data["half_extents"] = np.asarray(file["part/half_extents"][()])
             data["parent"] = np.asarray(file["part/parent"][()])
             data["shape"] = _shape_names(file, "part/shape", len(data["parent"]))
+            # parts without a shape of their own (a springy organism's proxies) are not drawn
+            parts = len(data["parent"])
+            data["solid"] = (np.asarray(file["part/solid"][()], dtype=bool) if "part/solid" in file
+                             else np.ones(parts, dtype=bool))
+            # shapes the parts carry (a springy organism's tubes), posed in their part's frame
+            carried = file["colliders"] if "colliders" in file else None
+            data["colliders"] = None
+            if carried is not None:
+                data["colliders"] = {
+                    "half_extents": np.asarray(carried["half_extents"][()], dtype=float),
+                    "part": np.asarray(carried["part"][()], dtype=int),
+                    "position": np.asarray(carried["position"][()], dtype=float),
+                    "orientation": np.asarray(carried["orientation"][()], dtype=float),
+                    "shape": _shape_names(file, "colliders/shape", len(carried["part"])),
+                }
             # objects held at birth (a catapult's projectile): /held, absent when there are none
             held = file["held"] if "held" in file else None
             data["held_half_extents"] = np.asarray(held["half_extents"][()]) if held else np.zeros((0, 3))
@@ -101,6 +116,16 @@ def load_trajectory(path):
     held = len(data["held_half_extents"])
     if data["held_position"].shape != (frames, held, 3) or data["held_orientation"].shape != (frames, held, 4):
         raise TrajectoryError(f"{path}: /held/position or /held/orientation does not match {frames} frames x {held} objects")
+    if data["solid"].shape != (parts,):
+        raise TrajectoryError(f"{path}: /part/solid does not match {parts} parts")
+    carried = data["colliders"]
+    if carried is not None:
+        count = len(carried["part"])
+        if carried["half_extents"].shape != (count, 3) or carried["position"].shape != (count, 3) \
+                or carried["orientation"].shape != (count, 4):
+            raise TrajectoryError(f"{path}: the /colliders datasets do not match {count} colliders")
+        if count and (carried["part"].min() < 0 or carried["part"].max() >= parts):
+            raise TrajectoryError(f"{path}: /colliders/part names a part outside 0..{parts - 1}")
     if data["light"] is not None and data["light"].shape != (frames, 3):
         raise TrajectoryError(f"{path}: /light/position does not match {frames} frames")
     data["attributes"] = {
@@ -132,6 +157,49 @@ def rotation_matrices(quaternions):
         ],
         -2,
     )
+
+
+def quaternion_product(a, b):
+    """a * b of quaternions (..., 4) stored as (x, y, z, w): b's turn, then a's."""
+    ax, ay, az, aw = (a[..., i] for i in range(4))
+    bx, by, bz, bw = (b[..., i] for i in range(4))
+    return np.stack([aw * bx + ax * bw + ay * bz - az * by,
+                     aw * by - ax * bz + ay * bw + az * bx,
+                     aw * bz + ax * by - ay * bx + az * bw,
+                     aw * bw - ax * bx - ay * by - az * bz], -1)
+
+
+def collider_poses(colliders, positions, quaternions):
+    """World positions (n, 3) and orientations (n, 4) of the shapes parts carry, from the parts'
+    world poses in one frame (`positions` (parts, 3), `quaternions` (parts, 4))."""
+    part = colliders["part"]
+    turn = rotation_matrices(quaternions[part])
+    world = np.einsum("nij,nj->ni", turn, colliders["position"]) + positions[part]
+    return world, quaternion_product(quaternions[part], colliders["orientation"])
+
+
+def body_faces(trajectory, index):
+    """The faces of every drawn shape of the body in frame `index`: the parts that have a shape
+    of their own, then the shapes they carry (each as its box)."""
+    solid = trajectory["solid"]
+    positions, quaternions = trajectory["position"][index], trajectory["orientation"][index]
+    faces = [box_faces(trajectory["half_extents"][solid], positions[solid], quaternions[solid])]
+    carried = trajectory["colliders"]
+    if carried is not None and len(carried["part"]):
+        world, turned = collider_poses(carried, positions, quaternions)
+        faces.append(box_faces(carried["half_extents"], world, turned))
+    return np.concatenate(faces)
+
+
+def body_colours(trajectory):
+    """One colour per face of body_faces: a part's own, and its colour on what it carries."""
+    parts = len(trajectory["half_extents"])
+    colours = plt.get_cmap("tab10")(np.arange(parts) % 10)
+    drawn = [colours[trajectory["solid"]]]
+    carried = trajectory["colliders"]
+    if carried is not None and len(carried["part"]):
+        drawn.append(colours[carried["part"]])
+    return np.repeat(np.concatenate(drawn), 6, axis=0)
 
 
 def box_corners(half_extents, positions, quaternions):
@@ -261,10 +329,8 @@ def render(trajectory, output, fps=None, size=(640, 480), stride=1, max_frames=N
     axes = figure.add_subplot(projection="3d", computed_zorder=False)
     axes.set_axis_off()
     axes.view_init(elev=25, azim=-60)
-    parts = len(trajectory["half_extents"])
-    colours = plt.get_cmap("tab10")(np.arange(parts) % 10)
     boxes = Poly3DCollection(
-        [], facecolors=np.repeat(colours, 6, axis=0), edgecolors="k", linewidths=0.4, alpha=0.95, zorder=3
+        [], facecolors=body_colours(trajectory), edgecolors="k", linewidths=0.4, alpha=0.95, zorder=3
     )
     grid = Line3DCollection([], colors="0.75", linewidths=0.5, zorder=1)
     axes.add_collection3d(grid)
@@ -280,9 +346,7 @@ def render(trajectory, output, fps=None, size=(640, 480), stride=1, max_frames=N
     # one frame: boxes, ground around the camera, the path of the centre of mass so far
     def draw(k):
         index = indices[k]
-        boxes.set_verts(
-            box_faces(trajectory["half_extents"], trajectory["position"][index], trajectory["orientation"][index])
-        )
+        boxes.set_verts(body_faces(trajectory, index))
         if len(trajectory["held_half_extents"]):
             held.set_verts(
                 box_faces(

@@ -76,13 +76,24 @@ def scene_of(trajectory, label=""):
             "half_extents": np.asarray(trajectory["half_extents"], dtype=float).tolist(),
             "parent": np.asarray(trajectory["parent"], dtype=int).tolist(),
             "shape": list(trajectory["shape"]),
+            "solid": np.asarray(trajectory["solid"], dtype=bool).tolist(),
         },
+        "colliders": None,
         "position": _rounded(trajectory["position"], POSITION_DECIMALS),
         "orientation": _rounded(trajectory["orientation"], ORIENTATION_DECIMALS),
         "light": None if trajectory["light"] is None else _rounded(trajectory["light"], POSITION_DECIMALS),
         "held": None,
         "terrain": None,
     }
+    carried = trajectory.get("colliders")
+    if carried is not None and len(carried["part"]):
+        scene["colliders"] = {
+            "part": np.asarray(carried["part"], dtype=int).tolist(),
+            "shape": list(carried["shape"]),
+            "half_extents": np.asarray(carried["half_extents"], dtype=float).tolist(),
+            "position": _rounded(carried["position"], POSITION_DECIMALS),
+            "orientation": _rounded(carried["orientation"], ORIENTATION_DECIMALS),
+        }
     terrain = trajectory.get("terrain")
     if terrain is not None:
         scene["terrain"] = {

@@ -175,8 +175,40 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
        writeShapes(group.get(), t.shape,
                    "each part's shape; index into the names attribute (half_extents read as "
                    "the shape reads its size)");
+  std::vector<std::uint8_t> solid = t.solid;
+  solid.resize(parts, 1);
+  ok = ok && writeDescribed(group.get(), "solid", {parts}, H5T_NATIVE_UINT8, solid.data(), "1",
+                            "1: the part has a shape of its own; 0: a mass without one (not drawn)");
   if (!ok)
     return false;
+
+  // the shapes the parts carry, when there are any
+  if (t.colliderCount() > 0) {
+    what = "the /colliders group";
+    const hsize_t colliders = t.colliderCount();
+    Handle carried(H5Gcreate2(file, "colliders", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    std::vector<double> carried_half, carried_position, carried_orientation;
+    for (const Vec3& h : t.collider_half_extents)
+      carried_half.insert(carried_half.end(), {h.x, h.y, h.z});
+    std::vector<std::int32_t> carriers(t.collider_part.begin(), t.collider_part.end());
+    flattenPoses(t.collider_pose, carried_position, carried_orientation);
+    const hid_t c = carried.get();
+    if (!carried.valid() ||
+        !writeString(c, "description",
+                     "shapes the parts carry besides their own (a springy organism's tubes), "
+                     "fixed in the carrying part's frame") ||
+        !writeDescribed(c, "half_extents", {colliders, 3}, H5T_NATIVE_DOUBLE, carried_half.data(),
+                        "m", "half the size along the shape's own x, y, z axes") ||
+        !writeDescribed(c, "part", {colliders}, H5T_NATIVE_INT32, carriers.data(), "1",
+                        "index of the part that carries it") ||
+        !writeDescribed(c, "position", {colliders, 3}, H5T_NATIVE_DOUBLE, carried_position.data(),
+                        "m", "its centre in the carrying part's frame") ||
+        !writeDescribed(c, "orientation", {colliders, 4}, H5T_NATIVE_DOUBLE,
+                        carried_orientation.data(), "1",
+                        "its orientation in the carrying part's frame, unit quaternion (x, y, z, w)") ||
+        !writeShapes(c, t.collider_shape, "each shape; index into the names attribute"))
+      return false;
+  }
 
   // the light, when recorded
   if (!t.light.empty()) {
@@ -274,6 +306,13 @@ void TrajectoryRecorder::begin(const BodyPlan& plan, double time_step,
     fresh.half_extents.push_back(part.size * 0.5);
     fresh.parent.push_back(part.parent);
     fresh.shape.push_back(part.shape);
+    fresh.solid.push_back(part.solid ? 1 : 0);
+  }
+  for (const ColliderPlan& collider : plan.colliders) {
+    fresh.collider_half_extents.push_back(collider.size * 0.5);
+    fresh.collider_part.push_back(collider.part);
+    fresh.collider_shape.push_back(collider.shape);
+    fresh.collider_pose.push_back(collider.pose);
   }
   for (const HeldObject& held : plan.held) {
     fresh.held_half_extents.push_back(held.size * 0.5);
@@ -315,7 +354,14 @@ std::uint64_t frameStrideFor(double frame_rate, double time_step) {
 void writeTrajectory(const std::string& path, const Trajectory& t) {
   // the arrays must agree before anything touches the disk
   const std::size_t frames = t.frameCount(), parts = t.partCount();
-  if (t.parent.size() != parts || t.shape.size() != parts || t.held_shape.size() != t.heldCount() ||
+  const std::size_t colliders = t.colliderCount();
+  bool bad_collider = t.collider_part.size() != colliders ||
+                      t.collider_shape.size() != colliders || t.collider_pose.size() != colliders;
+  for (int part : t.collider_part)
+    bad_collider = bad_collider || part < 0 || static_cast<std::size_t>(part) >= parts;
+  if (t.parent.size() != parts || t.shape.size() != parts ||
+      (!t.solid.empty() && t.solid.size() != parts) || bad_collider ||
+      t.held_shape.size() != t.heldCount() ||
       t.step.size() != frames || t.phase.size() != frames || t.center_of_mass.size() != frames ||
       t.poses.size() != frames * parts || t.held_part.size() != t.heldCount() ||
       t.held_poses.size() != frames * t.heldCount() ||
@@ -436,6 +482,41 @@ Trajectory readTrajectory(const std::string& path) {
     }
   };
   readShapes("part/shape", parts, t.shape);
+  // whether each part has a shape of its own (files of before: every part has)
+  if (H5Lexists(f, "part/solid", H5P_DEFAULT) > 0) {
+    need(readDataset(f, "part/solid", t.solid, dims), "part/solid");
+    shape("part/solid", {parts});
+  }
+  // the shapes the parts carry (files without /colliders: none)
+  if (H5Lexists(f, "colliders", H5P_DEFAULT) > 0) {
+    std::vector<double> carried_half, carried_position, carried_orientation;
+    std::vector<std::int32_t> carriers;
+    need(readDataset(f, "colliders/half_extents", carried_half, dims), "colliders/half_extents");
+    const hsize_t colliders = dims.size() == 2 ? dims[0] : 0;
+    auto collider_shape = [&](const char* name, std::vector<hsize_t> wanted) {
+      if (dims != wanted)
+        fail(std::string("dataset /") + name + " has the wrong shape for " +
+             std::to_string(colliders) + " colliders");
+    };
+    collider_shape("colliders/half_extents", {colliders, 3});
+    need(readDataset(f, "colliders/part", carriers, dims), "colliders/part");
+    collider_shape("colliders/part", {colliders});
+    need(readDataset(f, "colliders/position", carried_position, dims), "colliders/position");
+    collider_shape("colliders/position", {colliders, 3});
+    need(readDataset(f, "colliders/orientation", carried_orientation, dims),
+         "colliders/orientation");
+    collider_shape("colliders/orientation", {colliders, 4});
+    for (hsize_t k = 0; k < colliders; ++k) {
+      if (carriers[k] < 0 || static_cast<hsize_t>(carriers[k]) >= parts)
+        fail("dataset /colliders/part: value " + std::to_string(carriers[k]) + " at entry " +
+             std::to_string(k) + " is not one of the " + std::to_string(parts) + " parts");
+      t.collider_half_extents.push_back(
+          {carried_half[3 * k], carried_half[3 * k + 1], carried_half[3 * k + 2]});
+      t.collider_part.push_back(carriers[k]);
+    }
+    readShapes("colliders/shape", colliders, t.collider_shape);
+    t.collider_pose = unflattenPoses(carried_position, carried_orientation, colliders);
+  }
   need(readDataset(f, "step", t.step, dims), "step");
   shape("step", {frames});
   need(readDataset(f, "phase", phases, dims), "phase");

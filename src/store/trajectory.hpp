@@ -40,6 +40,16 @@ struct Trajectory {
   std::vector<Vec3> half_extents;  ///< half the box size along the part's own axes, m
   std::vector<int> parent;         ///< parent part index, -1 for the root
   std::vector<PartShape> shape;    ///< each part's shape (half_extents as PartShape reads size)
+  /// 1: the part has a shape of its own; 0: a mass without one, not drawn (a springy organism's
+  /// proxy bodies). Empty: every part has (files of before)
+  std::vector<std::uint8_t> solid;
+
+  // the shapes parts carry besides their own (BodyPlan::colliders: a springy organism's tubes);
+  // each moves with its part, so its pose is in the part's frame
+  std::vector<Vec3> collider_half_extents;  ///< half the size, as PartShape reads it, m
+  std::vector<int> collider_part;           ///< the part that carries it
+  std::vector<PartShape> collider_shape;    ///< its shape
+  std::vector<Transform> collider_pose;     ///< its pose in the carrying part's frame
 
   // the frames
   std::vector<double> time;          ///< simulated time of each frame, s
@@ -68,6 +78,8 @@ struct Trajectory {
 
   /// Number of parts.
   std::size_t partCount() const { return half_extents.size(); }
+  /// Number of carried colliders.
+  std::size_t colliderCount() const { return collider_half_extents.size(); }
   /// Number of held objects.
   std::size_t heldCount() const { return held_half_extents.size(); }
   /// Number of frames.

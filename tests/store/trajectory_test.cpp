@@ -10,6 +10,7 @@
 #include "store/history.hpp"
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <cstring>
@@ -73,6 +74,19 @@ void expectSame(const Trajectory& a, const Trajectory& b) {
   EXPECT_EQ(a.parent, b.parent);
   EXPECT_EQ(a.shape, b.shape);
   EXPECT_EQ(a.held_shape, b.held_shape);
+  // no solid flags: every part solid
+  auto solid = [](const Trajectory& t) {
+    return t.solid.empty() ? std::vector<std::uint8_t>(t.partCount(), 1) : t.solid;
+  };
+  EXPECT_EQ(solid(a), solid(b));
+  EXPECT_EQ(a.collider_half_extents, b.collider_half_extents);
+  EXPECT_EQ(a.collider_part, b.collider_part);
+  EXPECT_EQ(a.collider_shape, b.collider_shape);
+  ASSERT_EQ(a.collider_pose.size(), b.collider_pose.size());
+  for (std::size_t i = 0; i < a.collider_pose.size(); ++i) {
+    EXPECT_EQ(a.collider_pose[i].position, b.collider_pose[i].position) << "collider " << i;
+    EXPECT_EQ(a.collider_pose[i].rotation, b.collider_pose[i].rotation) << "collider " << i;
+  }
   EXPECT_EQ(a.time, b.time);
   EXPECT_EQ(a.step, b.step);
   EXPECT_EQ(a.phase, b.phase);
@@ -517,6 +531,64 @@ TEST(TrajectoryRecorder, ShapesAreRecorded) {
   const Trajectory read = readTrajectory(path);
   EXPECT_EQ(read.shape, shapes);
   EXPECT_EQ(read.held_shape, std::vector<PartShape>{PartShape::cylinder});
+}
+
+// a part without a shape of its own and the shapes parts carry (a springy organism's proxies and
+// tubes) are recorded, written and read back; a collider on a part that does not exist is
+// refused by the writer and by the reader
+TEST(TrajectoryRecorder, CarriedShapesAndPartsWithoutAShapeAreRecorded) {
+  BodyPlan plan;
+  plan.parts.resize(3);
+  for (PartPlan& part : plan.parts)
+    part.shape = PartShape::sphere;
+  plan.parts[1].parent = 0;
+  plan.parts[1].solid = false;
+  plan.parts[2].parent = 1;
+  ColliderPlan tube;
+  tube.part = 2;
+  tube.shape = PartShape::capsule;
+  tube.size = {0.65, 0.15, 0.15};
+  tube.pose.position = {0.25, 0, 0};
+  tube.pose.rotation = {0, 0, std::sqrt(0.5), std::sqrt(0.5)};
+  plan.colliders = {tube, tube};
+  plan.colliders[1].part = 0;
+  plan.colliders[1].shape = PartShape::cylinder;
+  TrajectoryRecorder recorder(1);
+  recorder.begin(plan, 0.01, Environment{});
+  const std::vector<Transform> poses(3);
+  EvalFrame frame;
+  frame.poses = poses;
+  recorder.frame(frame);
+  const Trajectory& recorded = recorder.trajectory();
+  EXPECT_EQ(recorded.solid, (std::vector<std::uint8_t>{1, 0, 1}));
+  ASSERT_EQ(recorded.colliderCount(), 2u);
+  EXPECT_EQ(recorded.collider_part, (std::vector<int>{2, 0}));
+  EXPECT_EQ(recorded.collider_half_extents[0], (Vec3{0.325, 0.075, 0.075}));
+  EXPECT_EQ(recorded.collider_shape[1], PartShape::cylinder);
+  const std::string path = tempPath("carried.h5");
+  writeTrajectory(path, recorded);
+  expectSame(readTrajectory(path), recorded);
+
+  Trajectory stray = recorded;
+  stray.collider_part[1] = 3;
+  const std::string stray_path = tempPath("stray.h5");
+  EXPECT_EQ(thrownCode([&] { writeTrajectory(stray_path, stray); }),
+            static_cast<int>(ExitCode::failure));
+  EXPECT_FALSE(std::filesystem::exists(stray_path));
+  {
+    hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    hid_t parts = H5Dopen2(file, "colliders/part", H5P_DEFAULT);
+    const std::int32_t carriers[2] = {2, 3};
+    H5Dwrite(parts, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, carriers);
+    H5Dclose(parts);
+    H5Fclose(file);
+  }
+  try {
+    readTrajectory(path);
+    ADD_FAILURE() << "a collider on part 3 of 3 was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("colliders/part: value 3"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

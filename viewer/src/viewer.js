@@ -226,9 +226,30 @@ class Panel {
         new THREE.EdgesGeometry(mesh.geometry, 30),
         new THREE.LineBasicMaterial({ color: 0x1a1a1a })
       ));
+      // a part without a shape of its own (a springy organism's proxy) is a mass, not drawn
+      mesh.visible = !d.parts.solid || d.parts.solid[i] !== false;
       this.scene.add(mesh);
       return mesh;
     });
+    // shapes the parts carry (a springy organism's tubes), fixed in their part's frame
+    this.colliderMeshes = [];
+    const carried = d.colliders;
+    for (let k = 0; carried && k < carried.part.length; k++) {
+      const mesh = new THREE.Mesh(
+        shapeGeometry(carried.shape[k] || "box", carried.half_extents[k]),
+        this.partMeshes[carried.part[k]].material
+      );
+      mesh.position.set(carried.position[3 * k], carried.position[3 * k + 1], carried.position[3 * k + 2]);
+      mesh.quaternion.set(carried.orientation[4 * k], carried.orientation[4 * k + 1],
+        carried.orientation[4 * k + 2], carried.orientation[4 * k + 3]);
+      mesh.castShadow = true;
+      mesh.receiveShadow = true;
+      // in a holder that follows the part, so it shows even where the part itself is not drawn
+      const holder = new THREE.Object3D();
+      holder.add(mesh);
+      this.scene.add(holder);
+      this.colliderMeshes.push({ holder, mesh, part: carried.part[k] });
+    }
     // held objects (a catapult's projectile)
     this.heldMeshes = [];
     for (let k = 0; k < this.held; k++) {
@@ -297,6 +318,10 @@ class Panel {
       this.partMeshes[p].quaternion.set(
         d.orientation[4 * i], d.orientation[4 * i + 1], d.orientation[4 * i + 2], d.orientation[4 * i + 3]);
     }
+    for (const { holder, part } of this.colliderMeshes) {
+      holder.position.copy(this.partMeshes[part].position);
+      holder.quaternion.copy(this.partMeshes[part].quaternion);
+    }
     for (let k = 0; k < this.held; k++) {
       const i = f * this.held + k;
       const held = d.held;
@@ -340,6 +365,8 @@ class Panel {
       parts: this.parts,
       meshes: this.partMeshes.length,
       shapes: this.partMeshes.map((m) => m.geometry.type),
+      drawn_parts: this.partMeshes.filter((m) => m.visible).length,
+      colliders: this.colliderMeshes.map(({ mesh }) => mesh.geometry.type),
       held: this.held,
       light: Boolean(this.lightMesh),
       ground: this.data.ground,
