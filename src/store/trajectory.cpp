@@ -177,8 +177,9 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
                    "the shape reads its size)");
   std::vector<std::uint8_t> solid = t.solid;
   solid.resize(parts, 1);
-  ok = ok && writeDescribed(group.get(), "solid", {parts}, H5T_NATIVE_UINT8, solid.data(), "1",
-                            "1: the part has a shape of its own; 0: a mass without one (not drawn)");
+  ok =
+      ok && writeDescribed(group.get(), "solid", {parts}, H5T_NATIVE_UINT8, solid.data(), "1",
+                           "1: the part has a shape of its own; 0: a mass without one (not drawn)");
   if (!ok)
     return false;
 
@@ -203,9 +204,9 @@ bool writeContents(hid_t file, const Trajectory& t, std::string& what) {
                         "index of the part that carries it") ||
         !writeDescribed(c, "position", {colliders, 3}, H5T_NATIVE_DOUBLE, carried_position.data(),
                         "m", "its centre in the carrying part's frame") ||
-        !writeDescribed(c, "orientation", {colliders, 4}, H5T_NATIVE_DOUBLE,
-                        carried_orientation.data(), "1",
-                        "its orientation in the carrying part's frame, unit quaternion (x, y, z, w)") ||
+        !writeDescribed(
+            c, "orientation", {colliders, 4}, H5T_NATIVE_DOUBLE, carried_orientation.data(), "1",
+            "its orientation in the carrying part's frame, unit quaternion (x, y, z, w)") ||
         !writeShapes(c, t.collider_shape, "each shape; index into the names attribute"))
       return false;
   }
@@ -355,16 +356,15 @@ void writeTrajectory(const std::string& path, const Trajectory& t) {
   // the arrays must agree before anything touches the disk
   const std::size_t frames = t.frameCount(), parts = t.partCount();
   const std::size_t colliders = t.colliderCount();
-  bool bad_collider = t.collider_part.size() != colliders ||
-                      t.collider_shape.size() != colliders || t.collider_pose.size() != colliders;
+  bool bad_collider = t.collider_part.size() != colliders || t.collider_shape.size() != colliders ||
+                      t.collider_pose.size() != colliders;
   for (int part : t.collider_part)
     bad_collider = bad_collider || part < 0 || static_cast<std::size_t>(part) >= parts;
   if (t.parent.size() != parts || t.shape.size() != parts ||
       (!t.solid.empty() && t.solid.size() != parts) || bad_collider ||
-      t.held_shape.size() != t.heldCount() ||
-      t.step.size() != frames || t.phase.size() != frames || t.center_of_mass.size() != frames ||
-      t.poses.size() != frames * parts || t.held_part.size() != t.heldCount() ||
-      t.held_poses.size() != frames * t.heldCount() ||
+      t.held_shape.size() != t.heldCount() || t.step.size() != frames || t.phase.size() != frames ||
+      t.center_of_mass.size() != frames || t.poses.size() != frames * parts ||
+      t.held_part.size() != t.heldCount() || t.held_poses.size() != frames * t.heldCount() ||
       t.held_released.size() != frames * t.heldCount() ||
       (!t.light.empty() && t.light.size() != frames) ||
       (t.ground == "heightfield") !=
