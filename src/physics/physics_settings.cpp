@@ -104,8 +104,8 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
       .require([&p] { return p.max_angular_speed >= 0 && std::isfinite(p.max_angular_speed); },
                "must be >= 0 and finite (0 = not watched)");
   s.add("physics.max_joint_error", p.max_joint_error,
-        "a joint whose pivots part further than this ends the evaluation with status "
-        "joint_error, m (0 = not watched)")
+        "a turning joint (revolute, universal, spherical) whose pivots part further than this "
+        "ends the evaluation with status joint_error, m (0 = not watched)")
       .require([&p] { return p.max_joint_error >= 0 && std::isfinite(p.max_joint_error); },
                "must be >= 0 and finite (0 = not watched)");
   s.add("physics.max_contact_rate", p.max_contact_rate,

@@ -545,23 +545,26 @@ const std::vector<std::pair<int, int>>& RigidBodyWorld::partContacts() {
 }
 
 double RigidBodyWorld::largestJointError() const {
-  // each joint's frame on each of its bodies, where the bodies are now: the distance between
-  // the two frames' origins, less a slider's travel along its axis
+  // each watched joint's frame on each of its bodies, where the bodies are now: the distance
+  // between the two frames' origins
   double largest = 0;
-  auto measure = [&largest](const btGeneric6DofSpring2Constraint& joint, JointType type) {
+  auto measure = [&largest](const btGeneric6DofSpring2Constraint& joint) {
     const btTransform a = joint.getRigidBodyA().getWorldTransform() * joint.getFrameOffsetA();
     const btTransform c = joint.getRigidBodyB().getWorldTransform() * joint.getFrameOffsetB();
-    btVector3 apart = c.getOrigin() - a.getOrigin();
-    if (type == JointType::prismatic) {
-      const btVector3 axis = a.getBasis().getColumn(0);
-      apart -= axis * apart.dot(axis);
-    }
-    largest = std::max(largest, static_cast<double>(apart.length()));
+    largest = std::max(largest, static_cast<double>((c.getOrigin() - a.getOrigin()).length()));
+  };
+  // only joints that hold a point and let their bodies turn about it (the thesis watches its
+  // proxies' universal joints): a slider's or fixed joint's frames part by a lever arm's drift
+  // when its bodies turn fast, which the spin monitor watches
+  auto watched = [](JointType type) {
+    return type != JointType::prismatic && type != JointType::fixed;
   };
   for (std::size_t i = 1; i < plan_.parts.size(); ++i)
-    measure(*bullet_->joints[i], plan_.parts[i].joint);
+    if (watched(plan_.parts[i].joint))
+      measure(*bullet_->joints[i]);
   for (std::size_t k = 0; k < plan_.loops.size(); ++k)
-    measure(*bullet_->loops[k], plan_.loops[k].joint);
+    if (watched(plan_.loops[k].joint))
+      measure(*bullet_->loops[k]);
   return largest;
 }
 

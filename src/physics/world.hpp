@@ -72,8 +72,8 @@ class World {
   /// (lower part, higher part), in increasing order.
   virtual const std::vector<std::pair<int, int>>& partContacts() = 0;
   /// How far the joint that has come most apart after the last step is from holding, m: the
-  /// distance between its pivots on its two parts, less a slider's own travel (0 in a world
-  /// whose joints cannot part).
+  /// distance between its pivots on its two parts, over the joints that hold a point and turn
+  /// about it (revolute, universal, spherical; 0 in a world whose joints cannot part).
   virtual double largestJointError() const = 0;
   /// The unit direction from part `part` towards the world point `point`, in the part's frame.
   virtual Vec3 directionInPart(int part, Vec3 point) const = 0;

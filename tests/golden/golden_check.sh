@@ -138,6 +138,8 @@ case $mode in
       "${common[@]}" --seed 17
     evolve epochs --task.name juries --evolution.epochs maximum_height@1 \
       --evolution.epochs average_velocity+ground_contact_ratio:0.5:lower "${common[@]}" --seed 18
+    evolve springy_pyramids --config "$source_dir/jobs/experiments/springy/pyramids-parametric.ini" \
+      --springy.organism "$creatures/springy/pyramid.organism" "${common[@]}" --seed 19
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do
@@ -182,6 +184,11 @@ case $mode in
     for seed in 1 6; do
       simulate "simulate_random${seed}_catapult" --random --seed "$seed" --task catapult \
         --genome.catapult true --task.evaluation_time 3
+    done
+    for organism in pyramid snake; do
+      simulate "simulate_springy_${organism}" --random --seed 5 \
+        --config "$source_dir/jobs/experiments/springy/snake-frozen.ini" \
+        --springy.organism "$creatures/springy/$organism.organism" --task.evaluation_time 3
     done
     simulate simulate_random3_synthetic --random --seed 3 --task synthetic \
       --task.synthetic_cost_us 10 --task.synthetic_distribution lognormal

@@ -236,6 +236,22 @@ TEST(RigidBodyWorld, AClosedLoopHoldsWhileTheFrameMoves) {
   EXPECT_NEAR(world->partPose(1).rotation.z, world->partPose(3).rotation.z, 0.02);
 }
 
+// the joint error is the widest gap between the two pivots of a joint that turns about a point;
+// a slider's frames (and a fixed joint's) are not watched
+TEST(RigidBodyWorld, TheJointErrorIsTheWidestGapOfATurningJoint) {
+  BodyPlan plan = parallelogram();
+  plan.loops[0].pivot_in_b = {0, -0.2, 0};  // 0.1 m from its pivot on part 0 at birth
+  auto world = build(RigidBodyWorld::kName, plan, weightless(), PhysicsSettings{});
+  ASSERT_EQ(world->birthStatus(), EvalStatus::ok) << world->birthMessage();
+  EXPECT_NEAR(world->largestJointError(), 0.1, 1e-9);
+  for (JointType unwatched : {JointType::prismatic, JointType::fixed}) {
+    plan.loops[0].joint = unwatched;
+    auto other = build(RigidBodyWorld::kName, plan, weightless(), PhysicsSettings{});
+    ASSERT_EQ(other->birthStatus(), EvalStatus::ok) << other->birthMessage();
+    EXPECT_LT(other->largestJointError(), 1e-9) << jointName(unwatched);
+  }
+}
+
 // a loop joint naming a part the body lacks is refused with a message
 TEST(RigidBodyWorld, ALoopJointToNoPartIsRefused) {
   BodyPlan plan = parallelogram();

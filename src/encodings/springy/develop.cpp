@@ -23,7 +23,7 @@ struct Body {
 struct BodyJoint {
   int a = 0, b = 0;
   JointType type = JointType::fixed;
-  int tube = 0;  // the tube it belongs to (a proxy's ball joint: the proxy's tube)
+  int tube = 0;  // the tube it belongs to (a proxy's universal joint: the proxy's tube)
 };
 
 // m a slider's stops lie beyond the muscle's range
@@ -96,6 +96,21 @@ std::array<Vec3, 3> acrossFrame(Vec3 along) {
   return {first, cross(along, first), along};
 }
 
+// a proxy's universal joint as a spherical joint whose middle axis, along the tube, is locked:
+// the tube does not spin about itself on its node and swings freely about the two axes across
+// it. Those are the first and last of Bullet's Euler angles, which turn without bound (a free
+// middle angle, as JointType::universal has, stops at a quarter turn); in the frame of either
+// body, both born unturned
+void makeUniversal(const Organism& organism, int tube_index, std::array<Vec3, 3>& axes,
+                   Vec3& limit) {
+  const Tube& tube = organism.tubes[tube_index];
+  Vec3 along = organism.nodes[tube.b].position - organism.nodes[tube.a].position;
+  along = along * (1 / norm(along));
+  const Vec3 across = acrossFrame(along)[0];
+  axes = {across, along, cross(across, along)};
+  limit = {kFree, 0, kFree};
+}
+
 // whether a muscle's length changes (A > 0 and f > 0); one that does not keeps its initial length
 bool moves(const Muscle& muscle) {
   return muscle.amplitude > 0 && muscle.frequency > 0;
@@ -115,7 +130,7 @@ BodyCounts countBodies(const Organism& organism) {
   for (const Body& body : layout.bodies)
     (body.proxy ? counts.proxies : counts.main_bodies) += 1;
   for (const BodyJoint& joint : layout.joints) {
-    counts.ball_joints += joint.type == JointType::spherical ? 1 : 0;
+    counts.universal_joints += joint.type == JointType::spherical ? 1 : 0;
     counts.sliders += joint.type == JointType::prismatic ? 1 : 0;
     counts.fixed_joints += joint.type == JointType::fixed ? 1 : 0;
   }
@@ -133,7 +148,7 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
     ++shares[body.node];
 
   // a spanning tree holding every slider (they share no body, so they make no cycle), then the
-  // ball joints, then the rods; the other joints close loops
+  // universal joints, then the rods; the other joints close loops
   std::vector<int> order(layout.joints.size());
   std::iota(order.begin(), order.end(), 0);
   auto rank = [](JointType type) {
@@ -218,7 +233,7 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
         part.joint_limit = {travel(organism.tubes[joint.tube]), 0, 0};
         part.strength = settings.muscle_force;
       } else if (joint.type == JointType::spherical) {
-        part.joint_limit = {kFree, kFree, kFree};
+        makeUniversal(organism, joint.tube, part.axes, part.joint_limit);
       } else {
         part.pivot_in_parent = apart * 0.5;
         part.pivot_in_child = apart * -0.5;
@@ -240,7 +255,7 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
     loop.pivot_in_a = apart * 0.5;
     loop.pivot_in_b = apart * -0.5;
     if (joint.type == JointType::spherical)
-      loop.joint_limit = {kFree, kFree, kFree};
+      makeUniversal(organism, joint.tube, loop.axes, loop.joint_limit);
     plan.loops.push_back(loop);
   }
 

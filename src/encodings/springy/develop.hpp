@@ -1,7 +1,6 @@
 // cambrian: a springy organism as a body (Krčah 2008, Algorithms B.1 and B.2): a sphere per node,
-// a fixed joint per rod, a slider per muscle, proxy bodies on ball joints where a node has more
-// than one joint (the thesis' universal joints over-constrain a ladder's parallel muscles: see
-// docs/springy.md), capsules along the tubes; and the sinusoids that drive its muscles.
+// a fixed joint per rod, a slider per muscle, proxy bodies on universal joints where a node has
+// more than one joint, capsules along the tubes; and the sinusoids that drive its muscles.
 #pragma once
 
 #include "cambrian/encoding.hpp"
@@ -18,7 +17,7 @@ struct BodySettings {
 
 /// How many bodies and joints of each kind Algorithm B.1 makes of an organism.
 struct BodyCounts {
-  int main_bodies = 0, proxies = 0, ball_joints = 0, sliders = 0, fixed_joints = 0;
+  int main_bodies = 0, proxies = 0, universal_joints = 0, sliders = 0, fixed_joints = 0;
 };
 
 /// The organism as a body plan with one position effector per muscle (tube order) and the

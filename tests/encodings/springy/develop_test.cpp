@@ -54,7 +54,7 @@ int mainBody(const BodyPlan& plan, int n) {
 }
 
 // the thesis' worked examples: two nodes and a muscle, 2 main bodies and no proxy; a triangle of
-// muscles, 3 main bodies, 3 proxies on 3 ball joints, each node's 1 kg split 0.5 + 0.5
+// muscles, 3 main bodies, 3 proxies on 3 universal joints, each node's 1 kg split 0.5 + 0.5
 TEST(SpringyBody, AlgorithmB1MakesTheThesisBodiesAndProxies) {
   const BodyCounts pair = countBodies(test::screenshotMuscle());
   EXPECT_EQ(pair.main_bodies, 2);
@@ -63,7 +63,7 @@ TEST(SpringyBody, AlgorithmB1MakesTheThesisBodiesAndProxies) {
   const BodyCounts counts = countBodies(triangle());
   EXPECT_EQ(counts.main_bodies, 3);
   EXPECT_EQ(counts.proxies, 3);
-  EXPECT_EQ(counts.ball_joints, 3);
+  EXPECT_EQ(counts.universal_joints, 3);
   EXPECT_EQ(counts.sliders, 3);
   const Creature creature = developOrganism(triangle(), BodySettings{});
   ASSERT_EQ(creature.body.parts.size(), 6u);
