@@ -43,7 +43,7 @@ TEST(SpringyEncoding, IsRegisteredByNameAndTag) {
 TEST(SpringyEncoding, TheOrganismFileIsReadWithTheSettingsElseTheBuiltInPyramid) {
   auto encoding = configured({{"springy.organism", kSnake}});
   const auto& springy = dynamic_cast<const SpringyEncoding&>(*encoding);
-  EXPECT_EQ(springy.organism_template.nodes.size(), 8u);
+  EXPECT_EQ(springy.organism_template.nodes.size(), 7u);
   try {
     configured({{"springy.organism", "/nonexistent/snake.organism"}});
     FAIL() << "a missing organism file was accepted";
@@ -122,8 +122,8 @@ TEST(SpringyEncoding, DevelopsOneEffectorPerMuscle) {
   EXPECT_EQ(creature.controller->kind(), "lengths");
   EXPECT_NO_THROW(creature.controller->build(0.01, 0, 6));
   EXPECT_THROW(creature.controller->build(0.01, 0, 5), Error);
-  EXPECT_EQ(encoding->size(genome).genes, 8u);
-  EXPECT_EQ(encoding->size(genome).links, 10u);
+  EXPECT_EQ(encoding->size(genome).genes, 7u);
+  EXPECT_EQ(encoding->size(genome).links, 6u);
 }
 
 }  // namespace
