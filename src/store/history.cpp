@@ -734,7 +734,7 @@ auto readWhileWritten(const std::string& path, Handle& file, Read read) {
       file.reset();
       std::this_thread::sleep_for(std::chrono::milliseconds(50 * (attempt + 1)));
       std::string problem;
-      file = openWhileWritten(path, problem);
+      file = openFile(path, "history", true, problem);
     }
   }
 }

@@ -59,6 +59,16 @@ Trajectory makeTrajectory() {
   return t;
 }
 
+// the same poses, bit for bit; `what` names them in a failure
+void expectSamePoses(const std::vector<Transform>& a, const std::vector<Transform>& b,
+                     const char* what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].position, b[i].position) << what << " " << i;
+    EXPECT_EQ(a[i].rotation, b[i].rotation) << what << " " << i;
+  }
+}
+
 // the same bits, field by field
 void expectSame(const Trajectory& a, const Trajectory& b) {
   EXPECT_EQ(a.creature_id, b.creature_id);
@@ -82,28 +92,16 @@ void expectSame(const Trajectory& a, const Trajectory& b) {
   EXPECT_EQ(a.collider_half_extents, b.collider_half_extents);
   EXPECT_EQ(a.collider_part, b.collider_part);
   EXPECT_EQ(a.collider_shape, b.collider_shape);
-  ASSERT_EQ(a.collider_pose.size(), b.collider_pose.size());
-  for (std::size_t i = 0; i < a.collider_pose.size(); ++i) {
-    EXPECT_EQ(a.collider_pose[i].position, b.collider_pose[i].position) << "collider " << i;
-    EXPECT_EQ(a.collider_pose[i].rotation, b.collider_pose[i].rotation) << "collider " << i;
-  }
+  expectSamePoses(a.collider_pose, b.collider_pose, "collider");
   EXPECT_EQ(a.time, b.time);
   EXPECT_EQ(a.step, b.step);
   EXPECT_EQ(a.phase, b.phase);
   EXPECT_EQ(a.center_of_mass, b.center_of_mass);
-  ASSERT_EQ(a.poses.size(), b.poses.size());
-  for (std::size_t i = 0; i < a.poses.size(); ++i) {
-    EXPECT_EQ(a.poses[i].position, b.poses[i].position) << "pose " << i;
-    EXPECT_EQ(a.poses[i].rotation, b.poses[i].rotation) << "pose " << i;
-  }
+  expectSamePoses(a.poses, b.poses, "pose");
   EXPECT_EQ(a.held_half_extents, b.held_half_extents);
   EXPECT_EQ(a.held_part, b.held_part);
   EXPECT_EQ(a.held_released, b.held_released);
-  ASSERT_EQ(a.held_poses.size(), b.held_poses.size());
-  for (std::size_t i = 0; i < a.held_poses.size(); ++i) {
-    EXPECT_EQ(a.held_poses[i].position, b.held_poses[i].position) << "held pose " << i;
-    EXPECT_EQ(a.held_poses[i].rotation, b.held_poses[i].rotation) << "held pose " << i;
-  }
+  expectSamePoses(a.held_poses, b.held_poses, "held pose");
   EXPECT_EQ(a.ground, b.ground);
   EXPECT_EQ(a.viscosity, b.viscosity);
   EXPECT_EQ(a.light, b.light);

@@ -96,16 +96,18 @@ std::array<Vec3, 3> acrossFrame(Vec3 along) {
   return {first, cross(along, first), along};
 }
 
-// a proxy's universal joint as a spherical joint whose middle axis, along the tube, is locked:
-// the tube does not spin about itself on its node and swings freely about the two axes across
-// it. Those are the first and last of Bullet's Euler angles, which turn without bound (a free
-// middle angle, as JointType::universal has, stops at a quarter turn); in the frame of either
-// body, both born unturned
-void makeUniversal(const Organism& organism, int tube_index, std::array<Vec3, 3>& axes,
-                   Vec3& limit) {
-  const Tube& tube = organism.tubes[tube_index];
-  Vec3 along = organism.nodes[tube.b].position - organism.nodes[tube.a].position;
-  along = along * (1 / norm(along));
+// the unit vector from a tube's node a to its node b
+Vec3 unitAlong(const Organism& organism, const Tube& tube) {
+  const Vec3 along = organism.nodes[tube.b].position - organism.nodes[tube.a].position;
+  return along * (1 / norm(along));
+}
+
+// a proxy's universal joint as a spherical joint whose middle axis, along the tube (`along`), is
+// locked: the tube does not spin about itself on its node and swings freely about the two axes
+// across it. Those are the first and last of Bullet's Euler angles, which turn without bound (a
+// free middle angle, as JointType::universal has, stops at a quarter turn); in the frame of
+// either body, both born unturned
+void makeUniversal(Vec3 along, std::array<Vec3, 3>& axes, Vec3& limit) {
   const Vec3 across = acrossFrame(along)[0];
   axes = {across, along, cross(across, along)};
   limit = {kFree, 0, kFree};
@@ -197,10 +199,6 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
         std::max(m.rest_length + m.amplitude - initial, initial - (m.rest_length - m.amplitude));
     return m.amplitude > 0 ? range + kStopMargin : 0.0;
   };
-  auto unitAlong = [&](const Tube& tube) {
-    const Vec3 along = organism.nodes[tube.b].position - organism.nodes[tube.a].position;
-    return along * (1 / norm(along));
-  };
 
   Creature creature;
   BodyPlan& plan = creature.body;
@@ -233,7 +231,7 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
         part.joint_limit = {travel(organism.tubes[joint.tube]), 0, 0};
         part.strength = settings.muscle_force;
       } else if (joint.type == JointType::spherical) {
-        makeUniversal(organism, joint.tube, part.axes, part.joint_limit);
+        makeUniversal(unitAlong(organism, organism.tubes[joint.tube]), part.axes, part.joint_limit);
       } else {
         part.pivot_in_parent = apart * 0.5;
         part.pivot_in_child = apart * -0.5;
@@ -255,7 +253,7 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
     loop.pivot_in_a = apart * 0.5;
     loop.pivot_in_b = apart * -0.5;
     if (joint.type == JointType::spherical)
-      makeUniversal(organism, joint.tube, loop.axes, loop.joint_limit);
+      makeUniversal(unitAlong(organism, organism.tubes[joint.tube]), loop.axes, loop.joint_limit);
     plan.loops.push_back(loop);
   }
 
@@ -276,7 +274,7 @@ Creature developOrganism(const Organism& organism, const BodySettings& settings)
   };
   for (std::size_t t = 0; t < organism.tubes.size(); ++t) {
     const Tube& tube = organism.tubes[t];
-    const Vec3 along = unitAlong(tube);
+    const Vec3 along = unitAlong(organism, tube);
     const double length = initialLength(organism, tube);
     if (tube.kind == TubeKind::rod) {
       carry(tube.a, along, length, tube.a, tube.b);
