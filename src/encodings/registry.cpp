@@ -4,6 +4,7 @@
 
 #include "encodings/directed_graph/encoding.hpp"
 #include "encodings/springy/encoding.hpp"
+#include "encodings/wwd/encoding.hpp"
 
 #include <cstring>
 
@@ -12,9 +13,11 @@ namespace cambrian {
 const std::vector<const Encoding*>& encodings() {
   static const graph::DirectedGraphEncoding directed_graph;
   static const springy::SpringyEncoding springy;
+  static const wwd::WwdEncoding wwd;
   static const std::vector<const Encoding*> registered = {
       &directed_graph,  // Sims 1994, Chaumont et al. 2007
       &springy,         // Krčah 2008
+      &wwd,             // Rasmussen and Lund, Walking with Dinosaurs
   };
   return registered;
 }
