@@ -170,8 +170,8 @@ Creature developCreature(const CreatureGenes& genes, const BodySettings& setting
     LayeredMuscles muscles;
     muscles.subnet = static_cast<int>(j);
     for (int k = 0; k < 3; ++k)
-      muscles.nodes[static_cast<std::size_t>(k)] = joint.effector[static_cast<std::size_t>(k)] %
-                                                   outputs;
+      muscles.nodes[static_cast<std::size_t>(k)] =
+          joint.effector[static_cast<std::size_t>(k)] % outputs;
     muscles.strength = plan.parts[j + 1].strength;
     network->joints.push_back(muscles);
   }

@@ -11,10 +11,10 @@ namespace cambrian::wwd {
 
 /// What the body is made of beyond the DNA (the wwd.* settings).
 struct BodySettings {
-  double density = 1000;           ///< kg / m^3: "each box is designated a weight proportional
-                                   ///< to its volume"
-  double friction = 1.0;           ///< the boxes' Coulomb coefficient
-  double strength_per_area = 2000; ///< N m of muscle torque per m^2 of the joint's cross-section
+  double density = 1000;            ///< kg / m^3: "each box is designated a weight proportional
+                                    ///< to its volume"
+  double friction = 1.0;            ///< the boxes' Coulomb coefficient
+  double strength_per_area = 2000;  ///< N m of muscle torque per m^2 of the joint's cross-section
 };
 
 /// The creature the grammar read. Box i is part i; joint j (box j + 1's joint to its parent) is a

@@ -184,9 +184,8 @@ Genotype WwdEncoding::fromBytes(const std::uint8_t* bytes, std::size_t size) con
 std::string WwdEncoding::toText(const Genotype& genome) const {
   const Dna& dna = dnaOf(genome);
   std::string text = std::string(kDnaTextHeader) + " " + std::to_string(kTextVersion) + "\n";
-  text += "# Walking with Dinosaurs DNA: " + std::to_string(dna.size()) +
-          " genes, each 0.." + std::to_string(kGeneValues - 1) + ", read by the grammar of " +
-          "docs/wwd.md\n";
+  text += "# Walking with Dinosaurs DNA: " + std::to_string(dna.size()) + " genes, each 0.." +
+          std::to_string(kGeneValues - 1) + ", read by the grammar of " + "docs/wwd.md\n";
   for (std::size_t i = 0; i < dna.size(); i += kGenesPerLine) {
     text += "dna";
     for (std::size_t k = i; k < dna.size() && k < i + kGenesPerLine; ++k)
@@ -238,8 +237,8 @@ Genotype WwdEncoding::fromText(const std::string& text, const std::string& sourc
       line.fail("unexpected '" + std::string(line.peek()) + "' at the end of the line");
   }
   if (!have_header)
-    throw InputError(source + ": empty (expected the header '" + std::string(kDnaTextHeader) +
-                     " " + std::to_string(kTextVersion) + "')");
+    throw InputError(source + ": empty (expected the header '" + std::string(kDnaTextHeader) + " " +
+                     std::to_string(kTextVersion) + "')");
   if (!have_end)
     throw InputError(source + ": no `end` line: the file is cut short");
   return makeGenotype(std::move(dna));

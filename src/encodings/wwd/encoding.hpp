@@ -57,7 +57,7 @@ class WwdEncoding : public Encoding {
 
   GrammarSettings grammar;
   BodySettings body;
-  double mutation_rate = 0;        ///< per gene; 0: 1 / the DNA's length (the seed's)
+  double mutation_rate = 0;          ///< per gene; 0: 1 / the DNA's length (the seed's)
   std::uint64_t max_genes = 100000;  ///< the longest DNA a genome may have
 };
 

@@ -48,9 +48,10 @@ class GeneReader {
 double fraction(Gene gene) {
   return gene / kTopGene;
 }
-// a gene as a number in [-1, 1]
+// a gene as a number in [-1, 1): (g - 500) / 500, 0 at the middle gene exactly
 double signedFraction(Gene gene) {
-  return 2 * fraction(gene) - 1;
+  constexpr double kMiddle = kGeneValues / 2;
+  return (gene - kMiddle) / kMiddle;
 }
 
 class CreatureReader {
@@ -206,6 +207,11 @@ Gene geneOf(double f) {
   const double g = std::round(std::clamp(f, 0.0, 1.0) * kTopGene);
   return static_cast<Gene>(g);
 }
+// the nearest gene to `x` in [-1, 1) read as a signed fraction
+Gene signedGeneOf(double x) {
+  constexpr double kMiddle = kGeneValues / 2;
+  return static_cast<Gene>(std::clamp(std::round(kMiddle + x * kMiddle), 0.0, kTopGene));
+}
 
 class CreatureWriter {
  public:
@@ -218,11 +224,16 @@ class CreatureWriter {
     if (static_cast<int>(genes_.boxes.size()) > settings_.max_boxes)
       throw GenomeError("wwd creature: " + std::to_string(genes_.boxes.size()) +
                         " boxes, more than wwd.max_boxes");
+    if (genes_.joints.size() + 1 != genes_.boxes.size())
+      throw GenomeError("wwd creature: " + std::to_string(genes_.boxes.size()) + " boxes and " +
+                        std::to_string(genes_.joints.size()) +
+                        " joints (joint j makes box j + 1: one box more than joints)");
     for (std::size_t j = 0; j < genes_.joints.size(); ++j) {
       const JointGenes& joint = genes_.joints[j];
-      if (joint.child != static_cast<int>(j) + 1 || joint.parent < 0 || joint.parent > joint.child - 1)
-        throw GenomeError("wwd creature: joint " + std::to_string(j) +
-                          " must make box " + std::to_string(j + 1) + " on an earlier box");
+      if (joint.child != static_cast<int>(j) + 1 || joint.parent < 0 ||
+          joint.parent > joint.child - 1)
+        throw GenomeError("wwd creature: joint " + std::to_string(j) + " must make box " +
+                          std::to_string(j + 1) + " on an earlier box");
     }
     box(0);
     joints(0);
@@ -263,8 +274,8 @@ class CreatureWriter {
         out_.push_back(e);
       double turns = joint.screw / (2 * kPi);
       turns -= std::floor(turns);
-      out_.push_back(static_cast<Gene>(static_cast<int>(std::round(turns * kGeneValues)) %
-                                       kGeneValues));
+      out_.push_back(
+          static_cast<Gene>(static_cast<int>(std::round(turns * kGeneValues)) % kGeneValues));
       facePoint(joint.pre);
       facePoint(joint.post);
       const double max_limit = settings_.max_joint_limit * kPi / 180;
@@ -276,8 +287,8 @@ class CreatureWriter {
   }
 
   void facePoint(const FacePoint& p) {
-    out_.push_back(geneOf((p.u + 1) / 2));
-    out_.push_back(geneOf((p.v + 1) / 2));
+    out_.push_back(signedGeneOf(p.u));
+    out_.push_back(signedGeneOf(p.v));
     out_.push_back(static_cast<Gene>(((p.side % 6) + 6) % 6));
   }
 
@@ -305,7 +316,7 @@ class CreatureWriter {
 
   void node(const NodeGenes& n) {
     const double w = settings_.max_weight;
-    const auto weightGene = [w](double x) { return geneOf(w > 0 ? (x / w + 1) / 2 : 0.5); };
+    const auto weightGene = [w](double x) { return signedGeneOf(w > 0 ? x / w : 0); };
     if (n.function == LayeredFunction::constant) {
       out_.push_back(0);
       out_.push_back(weightGene(n.value));

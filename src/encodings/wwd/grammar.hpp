@@ -28,13 +28,14 @@ using Dna = std::vector<Gene>;
 
 /// The grammar's limits and the numbers its genes are read into (the wwd.* settings).
 struct GrammarSettings {
-  int max_boxes = 15;                  ///< "we are limited to 15 boxes each world"
-  double min_side = 0.05;              ///< m, "within bullets specifications 0.05 to 10"
-  double max_side = 10;                ///< m
-  double max_joint_limit = 85;         ///< degrees, "in the range of +-85 in each direction"
-  int main_net_size = 5;               ///< the most probable nodes per layer of the main net
-  int subnet_size = 3;                 ///< the same for a joint's subnet
-  double max_weight = 5;               ///< weights and constant values span +-max_weight
+  int max_boxes = 15;           ///< "we are limited to 15 boxes each world"
+  double min_side = 0.05;       ///< m, "within bullets specifications 0.05 to 10"
+  double max_side = 10;         ///< m
+  double max_joint_limit = 85;  ///< degrees, "in the range of +-85 in each direction"
+  int main_net_size = 5;        ///< the most probable nodes per layer of the main net
+  int subnet_size = 3;          ///< the same for a joint's subnet
+  /// weights and constant values: max_weight (g - 500) / 500, 0 at g = 500
+  double max_weight = 5;
   friend bool operator==(const GrammarSettings&, const GrammarSettings&) = default;
 };
 
@@ -44,8 +45,9 @@ struct GeneSpan {
   std::size_t size() const { return end - begin; }
 };
 
-/// A point on a box face: face `side` (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z) at (u, v) in units
-/// of the half-sides of its two other axes (the next axis after the face's, then the one after).
+/// A point on a box face: face `side` (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z) at (u, v) in [-1, 1)
+/// (a gene g reads (g - 500) / 500) in units of the half-sides of its two other axes (the next axis
+/// after the face's, then the one after).
 struct FacePoint {
   int side = 0;
   double u = 0, v = 0;
@@ -99,9 +101,9 @@ struct CreatureGenes {
 CreatureGenes readCreature(const Dna& dna, const GrammarSettings& settings);
 /// The DNA the grammar reads as `genes` (its spans and counters not used): each chooser the
 /// smallest gene of its case, each number the nearest gene. Exact for what readCreature gives:
-/// readCreature(writeCreature(g)) == g but for spans, genes_read and truncated. Throws GenomeError naming the box, joint
-/// or net when `genes` cannot be written (a joint on a later box, a layer size no chooser gives,
-/// more boxes than the limit).
+/// readCreature(writeCreature(g)) == g but for spans, genes_read and truncated. Throws GenomeError
+/// naming the box, joint or net when `genes` cannot be written (a joint on a later box, a layer
+/// size no chooser gives, more boxes than the limit).
 Dna writeCreature(const CreatureGenes& genes, const GrammarSettings& settings);
 /// A random creature's DNA: the grammar read over genes drawn uniformly as it needs them.
 Dna randomDna(const GrammarSettings& settings, Rng& rng);

@@ -4,26 +4,29 @@
 #include "cambrian/rng.hpp"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 namespace cambrian::wwd {
 
 namespace {
 
-// the Mtree's points of a creature: its joints' spans (with their screw genes) and its nets'
+// the Mtree's points of a creature by kind (CrossoverPoint::Kind joint, subnet, main_net), and
+// the joints' screw genes
 struct Mtree {
-  std::vector<GeneSpan> joints, nets;
+  std::array<std::vector<GeneSpan>, 4> points;
   std::vector<std::size_t> screws;
 };
 
 Mtree mtreeOf(const CreatureGenes& genes) {
+  using Kind = CrossoverPoint::Kind;
   Mtree tree;
   for (const JointGenes& joint : genes.joints) {
-    tree.joints.push_back(joint.span);
+    tree.points[static_cast<std::size_t>(Kind::joint)].push_back(joint.span);
     tree.screws.push_back(joint.screw_gene);
-    tree.nets.push_back(joint.subnet.span);
+    tree.points[static_cast<std::size_t>(Kind::subnet)].push_back(joint.subnet.span);
   }
-  tree.nets.push_back(genes.main.span);
+  tree.points[static_cast<std::size_t>(Kind::main_net)].push_back(genes.main.span);
   return tree;
 }
 
@@ -47,20 +50,26 @@ Dna mutateDna(const Dna& dna, double rate, Rng& rng) {
 
 Dna crossDna(const Dna& receiver, const Dna& donor, const GrammarSettings& settings, Rng& rng,
              CrossoverPoint* point) {
+  using Kind = CrossoverPoint::Kind;
   const Mtree to = mtreeOf(readCreature(receiver, settings));
   const Mtree from = mtreeOf(readCreature(donor, settings));
-  const std::size_t points = to.joints.size() + to.nets.size();
-  const std::size_t pick = rng.below(points);
-  const bool joint = pick < to.joints.size();
-  const std::vector<GeneSpan>& donors = joint ? from.joints : from.nets;
+  // a point of the receiver, drawn uniformly over all its points, and its kind
+  std::size_t pick = rng.below(to.points[1].size() + to.points[2].size() + to.points[3].size());
+  std::size_t kind = 1;
+  while (pick >= to.points[kind].size()) {
+    pick -= to.points[kind].size();
+    ++kind;
+  }
+  const std::vector<GeneSpan>& donors = from.points[kind];
   if (donors.empty()) {
     if (point)
       *point = {};
     return receiver;
   }
-  const GeneSpan target = joint ? to.joints[pick] : to.nets[pick - to.joints.size()];
+  const GeneSpan target = to.points[kind][pick];
   const std::size_t chosen = rng.below(donors.size());
   const GeneSpan source = donors[chosen];
+  const bool joint = kind == static_cast<std::size_t>(Kind::joint);
 
   // the donor's genes, zeros where it reads past its end
   std::vector<Gene> copied(source.size(), 0);
@@ -71,15 +80,15 @@ Dna crossDna(const Dna& receiver, const Dna& donor, const GrammarSettings& setti
     screw = halfTurn(screw);
   }
 
-  Dna child(receiver.begin(),
-            receiver.begin() + static_cast<std::ptrdiff_t>(std::min(target.begin, receiver.size())));
+  Dna child(receiver.begin(), receiver.begin() + static_cast<std::ptrdiff_t>(
+                                                     std::min(target.begin, receiver.size())));
   child.resize(target.begin, 0);
   child.insert(child.end(), copied.begin(), copied.end());
   if (target.end < receiver.size())
     child.insert(child.end(), receiver.begin() + static_cast<std::ptrdiff_t>(target.end),
                  receiver.end());
   if (point)
-    *point = {joint ? CrossoverPoint::Kind::joint : CrossoverPoint::Kind::net, target, source};
+    *point = {static_cast<Kind>(kind), target, source};
   return child;
 }
 

@@ -17,16 +17,17 @@ Dna mutateDna(const Dna& dna, double rate, Rng& rng);
 
 /// What a crossover moved, for tests and statistics.
 struct CrossoverPoint {
-  enum class Kind : std::uint8_t { none, joint, net } kind = Kind::none;
+  enum class Kind : std::uint8_t { none, joint, subnet, main_net } kind = Kind::none;
   GeneSpan receiver, donor;  ///< the spans replaced and copied
 };
 
 /// A child of `receiver` with one Mtree point replaced by one of the same kind of `donor`: a
-/// joint and the boxes built on it (its screw turned half: the seed's 180 degree rotation) or a
-/// net (the main net or a subnet). Points are drawn uniformly among the receiver's, then among
-/// the donor's of that kind; the donor's genes read past its end are copied as the zeros read
-/// there. Without a point of the kind in the donor, the child is the receiver. `point`, when
-/// given, says what moved.
+/// joint and the boxes built on it (its screw turned half: the seed's 180 degree rotation), a
+/// joint's subnet, or the main net (main net for main net only: its layer sizes are chosen
+/// around another most probable size, so a main net read as a subnet reads otherwise). Points are
+/// drawn uniformly among the receiver's, then among the donor's of that kind; the donor's genes
+/// read past its end are copied as the zeros read there. Without a point of the kind in the donor,
+/// the child is the receiver. `point`, when given, says what moved.
 Dna crossDna(const Dna& receiver, const Dna& donor, const GrammarSettings& settings, Rng& rng,
              CrossoverPoint* point = nullptr);
 
