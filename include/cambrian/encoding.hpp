@@ -129,8 +129,13 @@ class Encoding {
   /// Whether `variation` exists for this encoding.
   virtual bool supports(Variation variation) const = 0;
   /// A mutated copy of `parent`; `parameter_rate` is the chance each parameter is perturbed
-  /// (the encoding's structural rates are its own settings). Valid under the settings.
+  /// (the encoding's structural rates are its own settings), or, where scalesOwnMutation(), a
+  /// multiplier of the encoding's own chance. Valid under the settings.
   virtual Genotype mutate(const Genotype& parent, double parameter_rate, Rng& rng) const = 0;
+  /// Whether mutate()'s `parameter_rate` multiplies a chance per gene the encoding sets itself
+  /// (Walking with Dinosaurs' 1/n) rather than being the chance: breeding schemes then pass 1,
+  /// or the wwd scheme's diversity multiplier.
+  virtual bool scalesOwnMutation() const { return false; }
   /// A child of two parents by `variation` (crossover, graft, graft_feature, segment_crossover:
   /// `a` receives, or gives the first segment).
   /// Valid under the settings.

@@ -19,9 +19,11 @@ enum class EvalStatus : std::uint8_t {
   failed,            ///< an exception inside the evaluation (message says which)
   joint_error,       ///< a joint came apart further than physics.max_joint_error
   self_contact,      ///< the parts hit each other more often than physics.max_contact_rate
+  too_tall,          ///< taller than task.max_height once relaxed (Walking with Dinosaurs)
+  dismembered,       ///< a joint broke under more than physics.joint_breaking x its strength
 };
 /// Number of EvalStatus values.
-constexpr int kEvalStatusKinds = 10;
+constexpr int kEvalStatusKinds = 12;
 
 /// Lower-case status name ("self_penetration").
 const char* statusName(EvalStatus status);

@@ -15,6 +15,7 @@
 #include "parallel/worker.hpp"
 #include "run/evolution_run.hpp"
 #include "run/stop_request.hpp"
+#include "store/history.hpp"
 #include "tasks/task.hpp"
 
 #include <algorithm>
@@ -22,6 +23,7 @@
 #include <filesystem>
 #include <iostream>
 #include <malloc.h>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <unistd.h>
@@ -53,6 +55,41 @@ struct Setup {
   std::vector<Genotype> seeds;
   std::string help_text;
 };
+
+// evolution.seed_history: the best individual (status ok; ties: lowest id) of the last
+// generation of the history at `path`, checked against `encoding`'s limits; InputError naming the
+// key and the file when it is missing, unreadable or holds no such individual
+Genotype bestOfLastGeneration(const std::string& path, const Encoding& encoding) {
+  const std::string key = "evolution.seed_history = " + path + ": ";
+  std::optional<Individual> best;
+  try {
+    HistoryReader history(path);
+    const std::vector<GenerationRecord> generations = history.generations();
+    if (generations.empty())
+      throw InputError("the history holds no complete generation");
+    const std::uint64_t last = generations.back().generation;
+    for (Individual& row : history.individuals()) {
+      if (row.generation != last || row.outcome.status != EvalStatus::ok)
+        continue;
+      if (!best || row.fitness() > best->fitness() ||
+          (row.fitness() == best->fitness() && row.id < best->id))
+        best = std::move(row);
+    }
+    if (!best)
+      throw InputError("no individual with status ok in its last generation (" +
+                       std::to_string(last) + ")");
+  } catch (const Error& e) {
+    throw InputError(key + e.what());
+  }
+  try {
+    encoding.validate(best->genome);
+  } catch (const Error& e) {
+    // a genome the run's encoding does not take (another encoding's, past the limits)
+    throw InputError(key + "its best individual (id " + std::to_string(best->id) +
+                     "): " + e.what());
+  }
+  return best->genome;
+}
 
 // parses and checks everything; throws Error with the config code and the file named
 void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
@@ -167,6 +204,10 @@ void parse(int argc, char** argv, bool read_seeds, Setup& setup) {
       }
       setup.seeds.push_back(std::move(genome));
     }
+    // a sequence of fitness tests: the best of a previous run's last generation
+    if (!s.evolution.seed_history.empty())
+      setup.seeds.push_back(
+          bestOfLastGeneration(s.evolution.seed_history, s.worker.creature.encoding()));
   }
 }
 

@@ -30,6 +30,10 @@ const char* statusName(EvalStatus status) {
       return "joint_error";
     case EvalStatus::self_contact:
       return "self_contact";
+    case EvalStatus::too_tall:
+      return "too_tall";
+    case EvalStatus::dismembered:
+      return "dismembered";
   }
   return "unknown";
 }

@@ -5,6 +5,7 @@
 
 #include "evolution/reaper.hpp"
 #include "evolution/selection.hpp"
+#include "evolution/wwd_breeding.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -52,6 +53,10 @@ Breeder::Breeder(const EvolutionSettings& settings, const Encoding& encoding)
     requireReaperOperators(settings, encoding);
     return;
   }
+  if (settings.scheme == BreedingScheme::wwd) {
+    requireWwdOperators(encoding);
+    return;
+  }
   // every operator the plan uses must exist for the encoding
   const std::pair<int, Variation> needs[] = {{plan_.mutations, Variation::mutation},
                                              {plan_.crossovers, Variation::crossover},
@@ -82,6 +87,8 @@ Population Breeder::initialPopulation(const std::vector<Genotype>& seeds) {
   population.generation = 0;
   population.individuals.reserve(static_cast<std::size_t>(settings_.population));
   std::uint64_t first_id = next_id_;
+  // the mutated copies' rate: evolution.mutation_rate, or 1 x an encoding's own chance
+  const double seed_rate = wwdMutationRate(encoding_, settings_, 1.0);
 
   for (int i = 0; i < settings_.population; ++i) {
     Individual individual;
@@ -108,8 +115,7 @@ Population Breeder::initialPopulation(const std::vector<Genotype>& seeds) {
       individual.origin = Origin::mutation;
       individual.parents = {first_id + source};
       for (int attempt = 0;; ++attempt) {
-        individual.genome =
-            encoding_.tidy(encoding_.mutate(seeds[source], settings_.mutation_rate, rng));
+        individual.genome = encoding_.tidy(encoding_.mutate(seeds[source], seed_rate, rng));
         if (acceptable(individual.genome, attempt))
           break;
       }
@@ -126,6 +132,8 @@ Population Breeder::nextGeneration(const Population& evaluated) {
   }
   if (settings_.scheme == BreedingScheme::reaper)
     return reap(evaluated);
+  if (settings_.scheme == BreedingScheme::wwd)
+    return breedWwd(evaluated);
   std::uint64_t g = evaluated.generation + 1;
   std::vector<std::size_t> ranking = evaluated.ranking();
   std::vector<double> ranked_fitness;
@@ -181,16 +189,17 @@ Population Breeder::nextGeneration(const Population& evaluated) {
                                                             : Origin::graft;
     for (int attempt = 0;; ++attempt) {
       if (child.origin == Origin::mutation) {
-        // asexual: copy and mutate each parameter with mutation_rate
-        child.genome = encoding_.mutate(a->genome, settings_.mutation_rate, rng);
+        // asexual: copy and mutate each parameter with mutation_rate (or the encoding's own)
+        child.genome = encoding_.mutate(a->genome, wwdMutationRate(encoding_, settings_, 1.0), rng);
       } else {
         // sexual: crossover or graft, then maybe the weaker mutation (Chaumont 5.7)
         Variation variation =
             child.origin == Origin::crossover ? Variation::crossover : Variation::graft;
         child.genome = encoding_.combine(variation, a->genome, b->genome, rng);
         if (rng.bernoulli(settings_.post_crossover_mutation_chance)) {
-          child.genome =
-              encoding_.mutate(child.genome, settings_.post_crossover_mutation_rate, rng);
+          child.genome = encoding_.mutate(
+              child.genome,
+              encoding_.scalesOwnMutation() ? 1.0 : settings_.post_crossover_mutation_rate, rng);
         }
       }
       child.genome = encoding_.tidy(child.genome);

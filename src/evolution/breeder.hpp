@@ -1,6 +1,7 @@
 // cambrian: breeding generations over genomes of any encoding (through the Encoding interface):
-// the generational Sims / Chaumont scheme — elitism plus mutation, crossover, grafting — or
-// Minemonics' reaper (reaper.hpp), as evolution.scheme says.
+// the generational Sims / Chaumont scheme — elitism plus mutation, crossover, grafting —,
+// Minemonics' reaper (reaper.hpp) or Walking with Dinosaurs' scheme (wwd_breeding.hpp), as
+// evolution.scheme says.
 #pragma once
 
 #include "cambrian/encoding.hpp"
@@ -41,12 +42,15 @@ class Breeder {
   /// operator the encoding lacks.
   Breeder(const EvolutionSettings& settings, const Encoding& encoding);
 
-  /// Generation 0: random genomes, or the seeds followed by mutated copies of them (round robin).
+  /// Generation 0: random genomes, or the seeds followed by mutated copies of them (round robin;
+  /// under the wwd scheme mutated as a bred child of multiplier 1 is: the wwd encoding at its own
+  /// chance per gene — "the rest of the population is filled with slightly mutated versions").
   Population initialPopulation(const std::vector<Genotype>& seeds = {});
 
   /// The next generation from an evaluated one. Generational: the best `elites` copied with
   /// their outcomes (not re-evaluated), then mutation, crossover and graft offspring of selected
   /// parents. Reaper: the kept survivors with their outcomes, the varied survivors, the sown.
+  /// Wwd: the elites with their outcomes, then children of an elite and a breeder (planWwd).
   /// Throws std::invalid_argument when `evaluated` is not fully evaluated.
   Population nextGeneration(const Population& evaluated);
 
@@ -68,6 +72,8 @@ class Breeder {
  private:
   // the reaper's next generation (reaper.cpp)
   Population reap(const Population& evaluated);
+  // the wwd scheme's next generation (wwd_breeding.cpp)
+  Population breedWwd(const Population& evaluated);
   // a copy of `parent` in `generation`, with its outcome (its genome did not change)
   Individual eliteCopy(const Individual& parent, std::uint64_t generation);
   bool acceptable(const Genotype& genome, int attempt) const {

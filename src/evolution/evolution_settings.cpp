@@ -6,6 +6,7 @@
 #include "core/settings.hpp"
 #include "evolution/competitive_ranking.hpp"
 #include "evolution/epochs.hpp"
+#include "evolution/wwd_breeding.hpp"
 
 #include <cmath>
 #include <iterator>
@@ -73,10 +74,14 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
 
   // the breeding scheme, and the reaper's shares (Minemonics)
   s.addChoice("evolution.scheme", e.scheme,
-              {{"generational", BreedingScheme::generational}, {"reaper", BreedingScheme::reaper}},
+              {{"generational", BreedingScheme::generational},
+               {"reaper", BreedingScheme::reaper},
+               {"wwd", BreedingScheme::wwd}},
               "how a generation is bred: generational (elites, mutation, crossover, grafting: "
               "Sims, Chaumont et al.) | reaper (Minemonics: cull the worst, vary the survivors, "
-              "sow by crossover and at random)");
+              "sow by crossover and at random) | wwd (Walking with Dinosaurs: the elites kept, "
+              "every other place a breeder that received a part of an elite by crossover, then "
+              "mutated)");
   ReaperSettings& r = e.reaper;
   s.add("evolution.reap_fraction", r.reap_fraction,
         "reaper: share of the worst culled and sown again (Minemonics: 0.3)")
@@ -112,6 +117,67 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
       sum += weight;
     if (!(sum > 0))
       throw ConfigError("evolution.reaper_*_share: every weight is 0; give one a weight");
+  });
+
+  // Walking with Dinosaurs' scheme (wwd_breeding.hpp)
+  WwdSettings& w = e.wwd;
+  s.add("evolution.wwd_elite_fraction", w.elite_fraction,
+        "wwd: share of the best kept with their outcomes, each bred child's donor (the seed: "
+        "0.2)")
+      .require([&w] { return w.elite_fraction > 0 && w.elite_fraction < 1; }, "must be in (0, 1)");
+  s.add("evolution.wwd_breeder_fraction", w.breeder_fraction,
+        "wwd: share after the elites that receive a part of an elite (the seed: 0.3; the rest "
+        "is gene pool waste)")
+      .require([&w] { return w.breeder_fraction > 0 && w.breeder_fraction < 1; },
+               "must be in (0, 1)");
+  s.add("evolution.wwd_adaptive_mutation", w.adaptive_mutation,
+        "wwd: scale the mutation of the bred by the spread of the generation's fitnesses, the "
+        "less spread the more mutation (the seed's Deviation): multiplier = "
+        "clamp(wwd_target_deviation / s, wwd_min_multiplier, wwd_max_multiplier), s the standard "
+        "deviation of the fitnesses divided by the largest |fitness| (all 0: s = 0); it scales "
+        "the wwd encoding's chance per gene, another encoding's evolution.mutation_rate");
+  s.add("evolution.wwd_target_deviation", w.target_deviation,
+        "wwd: the normalised fitness deviation at which the mutation is not scaled (0..0.5: the "
+        "normalised fitnesses lie in 0..1)")
+      .require([&w] { return w.target_deviation > 0 && std::isfinite(w.target_deviation); },
+               "must be > 0 and finite");
+  s.add("evolution.wwd_min_multiplier", w.min_multiplier,
+        "wwd: the least the mutation is scaled by (a wide spread of fitnesses)")
+      .require([&w] { return w.min_multiplier > 0 && std::isfinite(w.min_multiplier); },
+               "must be > 0 and finite");
+  s.add("evolution.wwd_max_multiplier", w.max_multiplier,
+        "wwd: the most the mutation is scaled by (no spread of fitnesses)")
+      .require([&w] { return w.max_multiplier > 0 && std::isfinite(w.max_multiplier); },
+               "must be > 0 and finite");
+  s.addCheck([&e, &w] {
+    std::ostringstream message;
+    if (w.elite_fraction + w.breeder_fraction > 1 + 1e-9) {
+      message << "evolution.wwd_elite_fraction + evolution.wwd_breeder_fraction = "
+              << w.elite_fraction + w.breeder_fraction
+              << ": must be at most 1 (the rest is the gene pool waste)";
+      throw ConfigError(message.str());
+    }
+    if (w.min_multiplier > w.max_multiplier) {
+      message << "evolution.wwd_min_multiplier = " << w.min_multiplier
+              << " is above evolution.wwd_max_multiplier = " << w.max_multiplier;
+      throw ConfigError(message.str());
+    }
+    if (e.scheme != BreedingScheme::wwd)
+      return;
+    // the population must hold at least one elite, one breeder and one bred place
+    const WwdPlan plan = planWwd(e);
+    if (plan.elites < 1) {
+      message << "evolution.wwd_elite_fraction = " << w.elite_fraction << ": no elite in "
+              << "evolution.population = " << e.population << " (round(" << e.population << " x "
+              << w.elite_fraction << ") = 0); the wwd scheme needs at least one";
+      throw ConfigError(message.str());
+    }
+    if (plan.breeders < 1) {
+      message << "evolution.wwd_breeder_fraction = " << w.breeder_fraction << ": no breeder in "
+              << "evolution.population = " << e.population << " after " << plan.elites
+              << " elites; the wwd scheme needs at least one";
+      throw ConfigError(message.str());
+    }
   });
 
   // selection
@@ -150,6 +216,17 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
         "genome files the first generation starts from (repeat the key or separate by spaces)")
       .require([&e] { return static_cast<int>(e.seed_genomes.size()) <= e.population; },
                "more seed genomes than the population");
+  s.add("evolution.seed_history", e.seed_history,
+        "a previous run's history.h5: the best individual (status ok; ties: lowest id) of its "
+        "last generation seeds the first generation, after any seed genomes, the rest mutated "
+        "copies (a sequence of fitness tests; empty: none)");
+  s.addCheck([&e] {
+    if (!e.seed_history.empty() && static_cast<int>(e.seed_genomes.size()) + 1 > e.population)
+      throw ConfigError("evolution.seed_history = " + e.seed_history +
+                        ": more seed genomes (evolution.seed_genomes and the history's best) "
+                        "than evolution.population = " +
+                        std::to_string(e.population));
+  });
   s.add("evolution.ranking", e.ranking,
         "competitive ranking (Minemonics): measures NAME[:WEIGHT[:higher|lower]]; the fitness "
         "becomes the weighted count of individuals each one beats on each (empty: the task's)");

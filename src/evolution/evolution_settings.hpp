@@ -41,6 +41,7 @@ enum class MutationSelection : std::uint8_t { same, truncation, tournament, roul
 enum class BreedingScheme : std::uint8_t {
   generational,  ///< Sims / Chaumont: elites, then mutation, crossover and graft offspring
   reaper,        ///< Minemonics' reaper: cull, vary the survivors, sow by crossover and at random
+  wwd,           ///< Walking with Dinosaurs: elites kept, the rest bred from an elite and a breeder
 };
 
 /// The kinds of survivor the reaper makes, in slot order: kept (elites), then one per operator.
@@ -71,11 +72,24 @@ struct ReaperSettings {
   double tournament_chance = 0.5;  ///< chance a partner comes from a tournament, not at random
 };
 
-/// Everything the generational Sims / Chaumont scheme and the reaper need. The encoding's own
-/// operator settings (structural mutation rates) are the encoding's.
+/// Walking with Dinosaurs' scheme (evolution.scheme = wwd, wwd_breeding.hpp), with the seed's
+/// numbers: elites 20 %, breeders 30 %, the rest gene pool waste; the mutation of the bred scaled
+/// by the spread of the generation's normalised fitnesses.
+struct WwdSettings {
+  double elite_fraction = 0.2;     ///< the best share, kept with their outcomes
+  double breeder_fraction = 0.3;   ///< the next share, each bred child's receiving parent
+  bool adaptive_mutation = true;   ///< scale the mutation by the fitness deviation ("Deviation")
+  double target_deviation = 0.25;  ///< the normalised deviation the mutation is not scaled at
+  double min_multiplier = 0.5;     ///< the least the mutation is scaled by (a wide spread)
+  double max_multiplier = 4;       ///< the most the mutation is scaled by (no spread)
+};
+
+/// Everything the generational Sims / Chaumont scheme, the reaper and the wwd scheme need. The
+/// encoding's own operator settings (structural mutation rates) are the encoding's.
 struct EvolutionSettings {
   BreedingScheme scheme = BreedingScheme::generational;
   ReaperSettings reaper;            ///< evolution.scheme = reaper
+  WwdSettings wwd;                  ///< evolution.scheme = wwd
   int population = 100;             ///< individuals per generation (P)
   int generations = 30;             ///< generations to run, the initial one included (G)
   double elite_fraction = 0.2;      ///< best share copied unchanged and not re-evaluated
@@ -90,6 +104,9 @@ struct EvolutionSettings {
   /// the mutation parents' method; its parameters are evolution.selection's
   MutationSelection mutation_selection = MutationSelection::same;
   std::vector<std::string> seed_genomes;  ///< genome files the first generation starts from
+  /// a previous run's history.h5: the best individual of its last generation seeds the first
+  /// generation too (after the seed_genomes; empty: none)
+  std::string seed_history;
   /// Minemonics' competitive ranking: measures as NAME[:WEIGHT[:higher|lower]]; when given, a
   /// generation's fitness is each individual's weighted rank points (competitive_ranking.hpp)
   std::vector<std::string> ranking;

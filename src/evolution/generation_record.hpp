@@ -29,6 +29,12 @@ struct GenerationRecord {
   double wall_seconds = 0;             ///< whole generation on rank 0
   double unix_time = 0;     ///< seconds since 1970-01-01 UTC when it went into the history (0: not)
   std::uint64_t epoch = 0;  ///< the epoch it was rated in (evolution.epochs, from 0; 0 without)
+  /// its fitnesses' standard deviation after division by the largest |fitness| (0..0.5;
+  /// mutationScale() in wwd_breeding.hpp): the seed's Deviation, a diversity measure
+  double fitness_deviation = 0;
+  /// what the mutation of the children bred from it is scaled by: the wwd scheme's adaptive
+  /// mutation (evolution.wwd_adaptive_mutation); 1 under every other scheme
+  double mutation_multiplier = 1;
   /// Evaluations per second of the evaluation span (0 when the span is 0).
   double evaluationsPerSecond() const;
   /// Share of worker time spent evaluating during the span, 0..1.

@@ -192,6 +192,20 @@ void BulletGround::add(btCollisionWorld& into, const Environment& environment,
   }
 }
 
+void BulletGround::setFriction(double friction) {
+  plane.setFriction(friction);
+  terrain.setFriction(friction);
+  if (!world)
+    return;
+  btDispatcher& dispatcher = *world->getDispatcher();
+  for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
+    btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(i);
+    const auto ground = [this](const btCollisionObject* o) { return o == &plane || o == &terrain; };
+    if (ground(manifold.getBody0()) || ground(manifold.getBody1()))
+      manifold.clearManifold();
+  }
+}
+
 BulletGround::~BulletGround() {
   if (has_terrain)
     world->removeCollisionObject(&terrain);

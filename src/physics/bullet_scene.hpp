@@ -41,6 +41,11 @@ inline int objectIndex(int k) {
 
 /// The collision shape of a part or object (capsules and cylinders along their x axis).
 std::unique_ptr<btCollisionShape> shapeOf(PartShape shape, Vec3 size);
+/// The most torque (prismatic: force) the joint between `part` and its parent exerts, N m: its
+/// own strength, else physics.strength_per_area x its cross-section.
+inline double jointStrength(const PartPlan& part, const PhysicsSettings& physics) {
+  return part.strength >= 0 ? part.strength : physics.strength_per_area * part.cross_section;
+}
 /// Principal inertia of a part about its centre.
 btVector3 inertiaOf(PartShape shape, Vec3 size, double mass);
 /// How far a part reaches below its centre along world z, given its world basis.
@@ -104,6 +109,9 @@ struct BulletGround {
 
   /// Adds the environment's ground (terrain first, then the plane) to `into`.
   void add(btCollisionWorld& into, const Environment& environment, const PhysicsSettings& physics);
+  /// The ground's friction coefficient from now on; its contact points are made anew at the next
+  /// step (a point keeps the friction it was made with).
+  void setFriction(double friction);
   ~BulletGround();
 };
 

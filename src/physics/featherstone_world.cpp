@@ -541,7 +541,7 @@ void FeatherstoneWorld::build(double birth_height) {
     btVector3 com_offset = toBt(-part.pivot_in_child);
     btVector3 inertia = inertiaOf(part.shape, part.size, part.mass);
     int dofs = degreesOfFreedom(part.joint);
-    max_torque_[i] = physics_.strength_per_area * part.cross_section;
+    max_torque_[i] = jointStrength(part, physics_);
 
     if (dofs == 0) {
       body.setupFixed(next_link, part.mass, inertia, parent_link, parent_to_this, parent_offset,
@@ -1005,6 +1005,10 @@ Vec3 FeatherstoneWorld::partPosition(int part) const {
 
 Transform FeatherstoneWorld::partPose(int part) const {
   return poseOf(*bullet_->colliders[part]);
+}
+
+void FeatherstoneWorld::setGroundFriction(double friction) {
+  bullet_->ground.setFriction(friction);
 }
 
 double FeatherstoneWorld::lowestPoint() const {

@@ -1,6 +1,8 @@
 // cambrian: the [physics] keys and their ranges.
 #include "physics/physics_settings.hpp"
 
+#include "cambrian/error.hpp"
+
 #include "core/settings.hpp"
 #include "physics/world.hpp"
 
@@ -48,6 +50,18 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "parts collide with each other while moving, joint neighbours excepted (Sims); false: "
         "only with the ground and objects (Walking with Dinosaurs). Overlap at birth is rejected "
         "either way");
+  s.add("physics.joint_breaking", p.joint_breaking,
+        "a joint breaks, ending the evaluation `dismembered`, once it carries more than this "
+        "times its strength (the rigid-body world; Walking with Dinosaurs: 1.05, 'Tensiles are "
+        "5% stronger than muscle'); 0: joints never break")
+      .require([&p] { return p.joint_breaking >= 0 && std::isfinite(p.joint_breaking); },
+               "must be >= 0 and finite");
+  s.addCheck([&p] {
+    if (p.joint_breaking > 0 && p.world != "rigid_bodies")
+      throw ConfigError("physics.joint_breaking = " + std::to_string(p.joint_breaking) +
+                        ": joints break only in physics.world = rigid_bodies (the " + p.world +
+                        " world's joints cannot)");
+  });
   s.add("physics.friction_anchors", p.friction_anchors,
         "contacts hold their point while inside the friction cone (Bullet friction anchors): a "
         "body at rest stays at rest; false: Bullet's default, resting contacts creep")

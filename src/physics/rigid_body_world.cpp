@@ -215,8 +215,7 @@ void RigidBodyWorld::build(double birth_height) {
     body.setActivationState(DISABLE_DEACTIVATION);
     anchorFriction(body, part.shape, physics_);
     b.world.addRigidBody(&body);
-    max_torque_[i] =
-        part.strength >= 0 ? part.strength : physics_.strength_per_area * part.cross_section;
+    max_torque_[i] = jointStrength(part, physics_);
   }
   addJoints();
   contact_.assign(part_count, 0);
@@ -298,6 +297,12 @@ void RigidBodyWorld::addJoints() {
                                 toBt(part.pivot_in_parent));
     b.joints.push_back(make(*b.parts[part.parent], *b.parts[i], in_parent, in_child, part.joint,
                             part.joint_limit, part.joint_damping));
+    // Walking with Dinosaurs' dismemberment: Bullet disables a joint one of whose rows needs a
+    // larger impulse in a substep than the breaking load would give
+    if (physics_.joint_breaking > 0)
+      b.joints.back()->setBreakingImpulseThreshold(physics_.joint_breaking *
+                                                   jointStrength(part, physics_) *
+                                                   physics_.time_step / physics_.substeps);
   }
   for (const LoopJoint& loop : plan_.loops) {
     const int part_count = static_cast<int>(plan_.parts.size());
@@ -578,6 +583,18 @@ Vec3 RigidBodyWorld::partPosition(int part) const {
 
 Transform RigidBodyWorld::partPose(int part) const {
   return poseOf(*bullet_->parts[static_cast<std::size_t>(part)]);
+}
+
+void RigidBodyWorld::setGroundFriction(double friction) {
+  bullet_->ground.setFriction(friction);
+}
+
+bool RigidBodyWorld::jointBroken() const {
+  for (const auto& joint : bullet_->joints) {
+    if (joint && !joint->isEnabled())
+      return true;
+  }
+  return false;
 }
 
 double RigidBodyWorld::lowestPoint() const {

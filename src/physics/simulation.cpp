@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace cambrian {
@@ -142,6 +143,15 @@ void Simulation::monitor() {
   }
   fastest_part_speed_ = std::sqrt(largest_step_sq) / settings_.time_step;
 
+  // a joint broken under its load (Walking with Dinosaurs' dismemberment)
+  if (world_->jointBroken()) {
+    std::ostringstream message;
+    message << "a joint broke under more than physics.joint_breaking " << settings_.joint_breaking
+            << " x its strength at step " << steps_;
+    fail(EvalStatus::dismembered, message.str());
+    return;
+  }
+
   // a joint turning implausibly fast (Minemonics' discard)
   if (settings_.max_joint_speed > 0) {
     const JointSpeed joint = world_->fastestJoint();
@@ -278,6 +288,22 @@ Vec3 Simulation::centerOfMass() const {
 
 double Simulation::lowestPoint() const {
   return world_->lowestPoint();
+}
+
+double Simulation::height() const {
+  // each solid part's reach up and down from its centre, as placed now
+  double top = -std::numeric_limits<double>::infinity(), bottom = -top;
+  for (std::size_t i = 0; i < plan_.parts.size(); ++i) {
+    const PartPlan& part = plan_.parts[i];
+    if (!part.solid)
+      continue;
+    const Transform pose = world_->partPose(static_cast<int>(i));
+    top = std::max(top,
+                   pose.position.z + shapeReach(part.shape, part.size, pose.rotation, {0, 0, 1}));
+    bottom = std::min(
+        bottom, pose.position.z - shapeReach(part.shape, part.size, pose.rotation, {0, 0, -1}));
+  }
+  return top > bottom ? top - bottom : 0;
 }
 
 void Simulation::partPoses(std::vector<Transform>& poses) const {

@@ -51,6 +51,10 @@ class Simulation {
   Vec3 centerOfMass() const;
   /// Height of the creature's lowest point above the ground, m.
   double lowestPoint() const;
+  /// The ground's friction coefficient from the next step on (World::setGroundFriction).
+  void setGroundFriction(double friction) { world_->setGroundFriction(friction); }
+  /// The creature's height: its highest point above its lowest, m.
+  double height() const;
   /// World pose of every part (BodyPlan order).
   void partPoses(std::vector<Transform>& poses) const;
   /// World pose of every held object (BodyPlan::held order) and whether each has been let go.

@@ -79,6 +79,12 @@ class World {
   virtual Vec3 directionInPart(int part, Vec3 point) const = 0;
   /// Height of the creature's lowest point above z = 0, m.
   virtual double lowestPoint() const = 0;
+  /// The ground's friction coefficient from the next step on (Walking with Dinosaurs relaxes a
+  /// creature on a frictionless ground, then measures it on the ground it was born on).
+  virtual void setGroundFriction(double friction) = 0;
+  /// Whether a joint has broken: carried more than its breaking load (physics.joint_breaking) and
+  /// let its part go; false in a world whose joints cannot break.
+  virtual bool jointBroken() const { return false; }
   /// World pose of free object `object` of the environment (Environment::objects order).
   virtual Transform objectPose(int object) const = 0;
   /// World pose of held object `held` (BodyPlan::held order).

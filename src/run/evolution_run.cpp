@@ -12,6 +12,7 @@
 #include "evolution/epochs.hpp"
 #include "evolution/outcome_reuse.hpp"
 #include "evolution/statistics.hpp"
+#include "evolution/wwd_breeding.hpp"
 #include "physics/physics_settings.hpp"
 #include "run/resume.hpp"
 #include "run/tables.hpp"
@@ -408,6 +409,9 @@ class EvolutionRun {
     record.worker_idle_seconds =
         std::max(0.0, span.workers * span.span_seconds - span.busy_seconds);
     record.epoch = epoch_place_.epoch;
+    const MutationScale scale = mutationScale(settings_, population);
+    record.fitness_deviation = scale.deviation;
+    record.mutation_multiplier = scale.multiplier;
     for (const Individual& individual : population.individuals)
       result_.individuals.push_back(tableRecord(individual));
     closeTimes(record);

@@ -115,6 +115,14 @@ const std::vector<Column>& generationColumns() {
       {"unix_time", f64, 1, "s since 1970-01-01T00:00:00Z", "wall clock when the row was written"},
       {"epoch", u64, 1, "1", "the epoch the generation was rated in (evolution.epochs), from 0",
        true},
+      {"fitness_deviation", f64, 1, "1",
+       "standard deviation of the fitnesses divided by the largest |fitness| (the wwd scheme's "
+       "diversity)",
+       true},
+      {"mutation_multiplier", f64, 1, "1",
+       "the next generation's mutation scaled by it (evolution.scheme = wwd; else 1; 0 in files "
+       "written before it)",
+       true},
   };
   return columns;
 }
@@ -244,6 +252,8 @@ void forEachGenerationField(G& g, Visit visit) {
   visit("wall_seconds", g.wall_seconds);
   visit("unix_time", g.unix_time);
   visit("epoch", g.epoch);
+  visit("fitness_deviation", g.fitness_deviation);
+  visit("mutation_multiplier", g.mutation_multiplier);
 }
 
 double unixNow() {

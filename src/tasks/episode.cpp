@@ -53,6 +53,28 @@ void EpisodeSettings::declareSettings(SettingsSchema& s) {
         "a creature of fewer parts is not evaluated: status invalid_body, the worst fitness "
         "(Minemonics: 2, it discards creatures of 0 or 1 limb)")
       .require([&t] { return t.min_parts >= 1 && t.min_parts <= 1000; }, "must be in 1..1000");
+  s.add("task.relaxation", t.relaxation,
+        "Walking with Dinosaurs' relaxation before the start-up: controller off on a frictionless "
+        "ground until the centre of mass keeps its height (task.relax_*); never: unstable");
+  s.add("task.relax_steps", t.relax_steps,
+        "relaxation: steps in a row the centre of mass must keep its height (the seed: 'a certain "
+        "amount of simulation steps ... found empirically')")
+      .require([&t] { return t.relax_steps >= 1 && t.relax_steps <= 10000000; },
+               "must be in 1..10000000");
+  s.add("task.relax_tolerance", t.relax_tolerance,
+        "relaxation: the most the centre of mass may rise or sink meanwhile, m")
+      .require([&t] { return t.relax_tolerance >= 0 && std::isfinite(t.relax_tolerance); },
+               "must be >= 0 and finite");
+  s.add("task.relax_max_time", t.relax_max_time,
+        "relaxation: the longest it may last, s (the seed: 'we have to restrict the time that the "
+        "relaxation can occur')")
+      .require([&t, seconds] { return t.relax_max_time > 0 && seconds(t.relax_max_time); },
+               "must be in (0, 3600] s");
+  s.add("task.max_height", t.max_height,
+        "the tallest a creature may stand once relaxed (or at birth), m: taller is too_tall "
+        "(Walking with Dinosaurs: 15); 0: no limit")
+      .require([&t] { return t.max_height >= 0 && std::isfinite(t.max_height); },
+               "must be >= 0 and finite");
 }
 
 Episode::Episode(const Creature& creature, const Environment& environment,
@@ -128,11 +150,7 @@ Episode::PhaseEnd Episode::runSteps(std::uint64_t steps, bool controller_on, Eva
       jury->observe(*simulation_);
       finished = finished || jury->finished();
     }
-    // a frame for the observer, if any (it only reads)
-    if (observer_ && totalSteps() % stride_ == 0)
-      show(phase);
-    // wall-clock bound, looked at every 256 steps
-    if (bounded_ && (totalSteps() & 255) == 0 && Clock::now() > deadline_)
+    if (!watched(phase))
       return PhaseEnd::stopped;
     // a jury that has measured all it will ends the phase
     if (finished)
@@ -156,10 +174,62 @@ Episode::PhaseEnd Episode::runSteps(std::uint64_t steps, bool controller_on, Eva
           << " s (task.rest_time) with every part slower than task.rest_speed = "
           << settings_.rest_speed << " m/s (longest rest " << longest * dt
           << " s; fastest part at the end " << fastest << " m/s)";
-  outcome_.status = EvalStatus::unstable;
-  outcome_.message = message.str();
-  outcome_.fitness = kWorstFitness;
+  refuse(EvalStatus::unstable, message.str());
   return PhaseEnd::unstable;
+}
+
+bool Episode::watched(EvalPhase phase) {
+  // a frame for the observer, if any (it only reads)
+  if (observer_ && totalSteps() % stride_ == 0)
+    show(phase);
+  // wall-clock bound, looked at every 256 steps
+  return !(bounded_ && (totalSteps() & 255) == 0 && Clock::now() > deadline_);
+}
+
+void Episode::refuse(EvalStatus status, std::string message) {
+  outcome_.status = status;
+  outcome_.message = std::move(message);
+  outcome_.fitness = kWorstFitness;
+}
+
+bool Episode::relax() {
+  if (settings_.relaxation) {
+    // on a frictionless ground, controller off, until the centre of mass keeps its height
+    simulation_->setGroundFriction(0);
+    const std::uint64_t last = stepsIn(settings_.relax_max_time, simulation_->timeStep());
+    const auto needed = static_cast<std::uint64_t>(settings_.relax_steps);
+    double height = simulation_->centerOfMass().z;
+    std::uint64_t still = 0;
+    for (std::uint64_t s = 0; s < last && still < needed; ++s) {
+      simulation_->step(false);
+      if (simulation_->status() != EvalStatus::ok || !watched(EvalPhase::settle))
+        return false;
+      const double z = simulation_->centerOfMass().z;
+      still = std::abs(z - height) <= settings_.relax_tolerance ? still + 1 : 0;
+      if (still == 0)
+        height = z;
+    }
+    if (still < needed) {
+      std::ostringstream message;
+      message << "not relaxed within task.relax_max_time = " << settings_.relax_max_time
+              << " s: the centre of mass never kept its height within task.relax_tolerance = "
+              << settings_.relax_tolerance << " m for task.relax_steps = " << settings_.relax_steps
+              << " steps";
+      refuse(EvalStatus::unstable, message.str());
+      return false;
+    }
+    simulation_->setGroundFriction(environment_.ground.friction);
+  }
+  // the height test
+  if (settings_.max_height > 0 && simulation_->height() > settings_.max_height) {
+    std::ostringstream message;
+    message << "the creature stands " << simulation_->height() << " m tall"
+            << (settings_.relaxation ? " once relaxed" : " at birth") << " (task.max_height "
+            << settings_.max_height << " m)";
+    refuse(EvalStatus::too_tall, message.str());
+    return false;
+  }
+  return true;
 }
 
 bool Episode::settle(double seconds, EvalPhase phase) {
@@ -168,7 +238,7 @@ bool Episode::settle(double seconds, EvalPhase phase) {
 }
 
 bool Episode::startUp() {
-  return settle(settings_.settle_time, EvalPhase::settle) &&
+  return relax() && settle(settings_.settle_time, EvalPhase::settle) &&
          run(settings_.trial_time, EvalPhase::trial) &&
          settle(settings_.resettle_time, EvalPhase::resettle);
 }

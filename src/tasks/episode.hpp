@@ -39,6 +39,17 @@ struct EpisodeSettings {
   /// Fewer parts and a creature is not evaluated (invalid_body): Minemonics discards creatures
   /// of 0 or 1 limb ("degenerate and can not move at all").
   int min_parts = 1;
+  /// Walking with Dinosaurs' relaxation before the start-up: the creature, controller off, on a
+  /// frictionless ground until its centre of mass has stayed within relax_tolerance of one height
+  /// for relax_steps steps in a row; not relaxed within relax_max_time: unstable. Then the ground
+  /// has its friction again.
+  bool relaxation = false;
+  int relax_steps = 500;          ///< steps the centre of mass must keep its height
+  double relax_tolerance = 1e-4;  ///< m, the most it may move up or down meanwhile
+  double relax_max_time = 10;     ///< s
+  /// m, the tallest a creature may be once relaxed (or at birth without relaxation): taller is
+  /// `too_tall` (Walking with Dinosaurs: 15); 0: no limit
+  double max_height = 0;
 
   /// Declares the keys, bound to this object, with their ranges.
   void declareSettings(SettingsSchema& schema);
@@ -64,9 +75,12 @@ class Episode {
   bool settle(double seconds, EvalPhase phase);
   /// `seconds` with the controller on; each jury begins first and observes every step.
   bool run(double seconds, EvalPhase phase, std::initializer_list<Jury*> juries = {});
-  /// Chaumont et al.'s start-up before measuring: settle (task.settle_time, controller off), a
-  /// trial (task.trial_time, on), settle again (task.resettle_time); false once a phase ends the
-  /// evaluation.
+  /// Walking with Dinosaurs' legality before anything else: the relaxation (task.relaxation),
+  /// then the height test (task.max_height); true at once when both are off.
+  bool relax();
+  /// Chaumont et al.'s start-up before measuring, after relax(): settle (task.settle_time,
+  /// controller off), a trial (task.trial_time, on), settle again (task.resettle_time); false
+  /// once a phase ends the evaluation.
   bool startUp();
 
   /// Moves the light the photosensors point at (a task that makes the creature follow it).
@@ -87,6 +101,10 @@ class Episode {
   enum class PhaseEnd { done, stopped, unstable };
   PhaseEnd runSteps(std::uint64_t steps, bool controller_on, EvalPhase phase,
                     std::initializer_list<Jury*> juries, bool rest);
+  // after a step: the observer's frame; false once the wall-clock bound has passed
+  bool watched(EvalPhase phase);
+  // ends the evaluation with `status` and `message`, the worst fitness
+  void refuse(EvalStatus status, std::string message);
   void show(EvalPhase phase);
   bool pastDeadline() const;
 

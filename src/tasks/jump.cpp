@@ -1,5 +1,5 @@
-// cambrian: the jump task — settle, then the highest the creature's lowest point rises while
-// measured (Walking with Dinosaurs' jump).
+// cambrian: the jump task — relax (when on), settle, then the highest the creature's lowest point
+// rises while measured (Walking with Dinosaurs' jump).
 #include "core/settings.hpp"
 #include "tasks/episode.hpp"
 #include "tasks/juries.hpp"
@@ -17,7 +17,7 @@ class JumpTask : public Task {
 
   void run(Episode& episode) const override {
     const EpisodeSettings& s = episode.settings();
-    if (!episode.settle(s.settle_time, EvalPhase::settle))
+    if (!episode.relax() || !episode.settle(s.settle_time, EvalPhase::settle))
       return;
     HeightJury height;
     if (!episode.run(s.evaluation_time, EvalPhase::measure, {&height}))

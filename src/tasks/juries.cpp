@@ -1,5 +1,5 @@
-// cambrian: the distance, displacement, approach, flag, height and throw juries and the walk
-// normalisations.
+// cambrian: the distance, displacement, approach, flag, height, iterative distance and throw
+// juries and the walk normalisations.
 #include "tasks/juries.hpp"
 
 #include <algorithm>
@@ -80,6 +80,25 @@ void HeightJury::begin(const Simulation& simulation) {
 
 void HeightJury::observe(const Simulation& simulation) {
   best_ = std::max(best_, simulation.lowestPoint());
+}
+
+void IterativeDistance::add(double distance, double time) {
+  // this gain of distance, weighted by when it came (divided by T in value())
+  weighted_ += (distance - distance_) * time;
+  distance_ = distance;
+  time_ = time;
+}
+
+void IterativeDistanceJury::begin(const Simulation& simulation) {
+  start_ = trackedPosition(simulation, point_);
+  steps_ = 0;
+  sum_ = IterativeDistance();
+}
+
+void IterativeDistanceJury::observe(const Simulation& simulation) {
+  ++steps_;
+  sum_.add(horizontal(trackedPosition(simulation, point_), start_),
+           static_cast<double>(steps_) * simulation.timeStep());
 }
 
 double chaumontFactor(const BodyPlan& plan, double k) {

@@ -124,6 +124,43 @@ class HeightJury : public Jury {
   double best_ = 0;
 };
 
+/// The arithmetic of Walking with Dinosaurs' iterative move: fed the distance d_i from the start
+/// at each measured time t_i (from the start of measuring, increasing), its value is
+/// Σ_i (d_i − d_{i−1}) · t_i / T, with d_0 = 0 and T the last t_i: each gain of distance weighted
+/// by how late it came. A steady mover to distance D scores about D / 2, one that gets to D at
+/// once and stops about 0, one that gets there at the very end about D; losses count negatively.
+class IterativeDistance {
+ public:
+  /// Distance `distance` (m) at time `time` (s) from the start of measuring.
+  void add(double distance, double time);
+  /// The weighted sum, m (0 before the first add or while T = 0).
+  double value() const { return time_ > 0 ? weighted_ / time_ : 0; }
+
+ private:
+  double distance_ = 0;  // d_{i−1}
+  double time_ = 0;      // t_{i−1}, at the end T
+  double weighted_ = 0;  // Σ (d_i − d_{i−1}) · t_i
+};
+
+/// "iterative_distance": Walking with Dinosaurs' iterative move (IterativeDistance) over the
+/// horizontal distance of the tracked point from where it was when measuring began, each
+/// measured step at its time from then, m. May be negative (the point came back).
+class IterativeDistanceJury : public Jury {
+ public:
+  explicit IterativeDistanceJury(TrackedPoint point = TrackedPoint::centre_of_mass)
+      : point_(point) {}
+  const char* name() const override { return "iterative_distance"; }
+  void begin(const Simulation& simulation) override;
+  void observe(const Simulation& simulation) override;
+  double value(const Simulation&) const override { return sum_.value(); }
+
+ private:
+  TrackedPoint point_;
+  Vec3 start_;
+  std::uint64_t steps_ = 0;
+  IterativeDistance sum_;
+};
+
 /// "distance": Chaumont et al.'s throw (4.2). Held object 0 is followed from the step it is let
 /// go: the horizontal distance from where it was let go to where it is (D_p), the least distance
 /// of its centre's path from the point `target` (D_t), and whether it has come to rest (its

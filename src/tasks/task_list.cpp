@@ -6,19 +6,21 @@
 
 namespace cambrian {
 
-const Task& walkTask();         // tasks/walk.cpp
-const Task& jumpTask();         // tasks/jump.cpp
-const Task& syntheticTask();    // tasks/synthetic.cpp
-const Task& swimTask();         // tasks/swim.cpp
-const Task& followLightTask();  // tasks/follow_light.cpp
-const Task& catapultTask();     // tasks/catapult.cpp
-const Task& juriesTask();       // tasks/juries_task.cpp
-const Task& flagTask();         // tasks/flag.cpp
+const Task& walkTask();           // tasks/walk.cpp
+const Task& jumpTask();           // tasks/jump.cpp
+const Task& syntheticTask();      // tasks/synthetic.cpp
+const Task& swimTask();           // tasks/swim.cpp
+const Task& followLightTask();    // tasks/follow_light.cpp
+const Task& catapultTask();       // tasks/catapult.cpp
+const Task& juriesTask();         // tasks/juries_task.cpp
+const Task& flagTask();           // tasks/flag.cpp
+const Task& iterativeMoveTask();  // tasks/iterative_move.cpp
+const Task& combinationTask();    // tasks/combination.cpp
 
 const std::vector<const Task*>& tasks() {
   static const std::vector<const Task*> registered = {
-      &walkTask(),        &jumpTask(),     &syntheticTask(), &swimTask(),
-      &followLightTask(), &catapultTask(), &juriesTask(),    &flagTask(),
+      &walkTask(),     &jumpTask(),   &syntheticTask(), &swimTask(),          &followLightTask(),
+      &catapultTask(), &juriesTask(), &flagTask(),      &iterativeMoveTask(), &combinationTask(),
   };
   return registered;
 }

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -453,6 +454,51 @@ TEST(EvolveCommand, TheReaperBreedsItsSharesAndResumesExactly) {
   const std::string digest = test::lineStartingWith(straight.output, "digest ");
   ASSERT_FALSE(digest.empty());
   EXPECT_EQ(test::lineStartingWith(resumed.output, "digest "), digest);
+}
+
+// a sequence of fitness tests (Walking with Dinosaurs): a run seeded by a previous run's history
+// starts from the best individual (status ok; ties: lowest id) of its last generation, the rest
+// of its first generation mutated copies of it, and breeds by the wwd scheme (population 6: one
+// elite kept, five bred); a history that is not there is refused naming the key and the path
+TEST(EvolveCommand, ASeedHistoryStartsFromTheBestOfItsLastGeneration) {
+  const std::string first = freshDir("seed_history_first");
+  auto earlier = runCambrian(tinyRun(first, 3) + " --seed 4");
+  ASSERT_EQ(earlier.exit_code, 0) << earlier.output;
+  std::optional<Individual> best;
+  for (const Individual& row : HistoryReader(first + "/history.h5").individuals()) {
+    if (row.generation == 2 && row.outcome.status == EvalStatus::ok &&
+        (!best || row.fitness() > best->fitness()))
+      best = row;
+  }
+  ASSERT_TRUE(best);
+
+  const std::string second = freshDir("seed_history_second");
+  auto next = runCambrian(tinyRun(second) + " --seed 5 --evolution.scheme wwd " +
+                          "--evolution.seed_history " + first + "/history.h5");
+  ASSERT_EQ(next.exit_code, 0) << next.output;
+  std::map<std::uint64_t, std::map<std::string, int>> kinds;
+  for (const Individual& row : HistoryReader(second + "/history.h5").individuals()) {
+    ++kinds[row.generation][originName(row.origin)];
+    if (row.generation != 0)
+      continue;
+    if (row.id == 0) {
+      EXPECT_EQ(row.origin, Origin::seed);
+      EXPECT_EQ(row.genome.bytes(), best->genome.bytes());
+    } else {
+      EXPECT_EQ(row.origin, Origin::mutation);
+      EXPECT_EQ(row.parents, std::vector<std::uint64_t>{0});
+    }
+  }
+  EXPECT_EQ(kinds[0], (std::map<std::string, int>{{"seed", 1}, {"mutation", 5}}));
+  EXPECT_EQ(kinds[1], (std::map<std::string, int>{{"elite", 1}, {"crossover", 5}}));
+
+  const std::string third = freshDir("seed_history_missing");
+  const std::string nowhere = third + "/nowhere/history.h5";
+  auto missing = runCambrian(tinyRun(third) + " --evolution.seed_history " + nowhere);
+  EXPECT_EQ(missing.exit_code, test::code(ExitCode::input_file)) << missing.output;
+  EXPECT_NE(missing.output.find("evolution.seed_history = " + nowhere + ": "), std::string::npos)
+      << missing.output;
+  EXPECT_FALSE(std::filesystem::exists(third + "/history.h5"));
 }
 
 TEST(EvolveCommand, HelpShowsDefaultsAsWritten) {

@@ -29,7 +29,8 @@ TEST(Tasks, NamesAreDistinctAndEachDeclaresMeasures) {
   }
   EXPECT_EQ(names.size(), tasks().size());
   EXPECT_EQ(taskNames(), (std::vector<std::string>{"walk", "jump", "synthetic", "swim",
-                                                   "follow_light", "catapult", "juries", "flag"}));
+                                                   "follow_light", "catapult", "juries", "flag",
+                                                   "iterative_move", "combination"}));
 }
 
 // every task's settings fit in one schema: no key is declared by two tasks

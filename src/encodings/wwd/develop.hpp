@@ -11,9 +11,10 @@ namespace cambrian::wwd {
 
 /// What the body is made of beyond the DNA (the wwd.* settings).
 struct BodySettings {
-  double density = 1000;            ///< kg / m^3: "each box is designated a weight proportional
-                                    ///< to its volume"
-  double friction = 1.0;            ///< the boxes' Coulomb coefficient
+  double density = 1000;  ///< kg / m^3: "each box is designated a weight proportional
+                          ///< to its volume"
+  double friction =
+      0.5;  ///< the boxes' Coulomb coefficient (Bullet's default, as the seed's BasicDemo)
   double strength_per_area = 2000;  ///< N m of muscle torque per m^2 of the joint's cross-section
 };
 

@@ -9,6 +9,7 @@
 #include "core/text_line.hpp"
 #include "encodings/wwd/operators.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string_view>
@@ -127,8 +128,12 @@ bool WwdEncoding::supports(Variation variation) const {
   return variation == Variation::mutation || variation == Variation::crossover;
 }
 
-Genotype WwdEncoding::mutate(const Genotype& parent, double, Rng& rng) const {
-  return makeGenotype(mutateDna(dnaOf(parent), mutation_rate, rng));
+Genotype WwdEncoding::mutate(const Genotype& parent, double parameter_rate, Rng& rng) const {
+  const Dna& dna = dnaOf(parent);
+  if (parameter_rate <= 0 || dna.empty())
+    return parent;
+  const double own = mutation_rate > 0 ? mutation_rate : 1.0 / static_cast<double>(dna.size());
+  return makeGenotype(mutateDna(dna, std::min(1.0, own * parameter_rate), rng));
 }
 
 Genotype WwdEncoding::combine(Variation variation, const Genotype& a, const Genotype& b,

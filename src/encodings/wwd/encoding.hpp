@@ -45,8 +45,10 @@ class WwdEncoding : public Encoding {
   Creature develop(const Genotype& genome) const override;
 
   bool supports(Variation variation) const override;
-  /// `parameter_rate` is not used: wwd.mutation_rate is the chance per gene.
+  /// Each gene drawn anew with chance `parameter_rate` x (wwd.mutation_rate, or 1/n), at most 1;
+  /// `parameter_rate` <= 0: the parent unchanged.
   Genotype mutate(const Genotype& parent, double parameter_rate, Rng& rng) const override;
+  bool scalesOwnMutation() const override { return true; }
   Genotype combine(Variation variation, const Genotype& a, const Genotype& b,
                    Rng& rng) const override;
 
