@@ -19,3 +19,6 @@ profile() {
 
 profile walker4 --genome jobs/creatures/walker4.genome --task walk
 profile snake --genome jobs/creatures/snake.genome --task walk
+# Walking with Dinosaurs: the Turtle (five boxes, the layered network) under its experiment file
+profile wwd-turtle --genome jobs/creatures/wwd/turtle.genome \
+  --config jobs/experiments/wwd/iterative-move.ini

@@ -47,7 +47,7 @@ TEST(Outcome, EveryStatusHasItsOwnName) {
     EXPECT_EQ(std::count(names.begin(), names.end(), name), 0) << name;
     names.push_back(name);
   }
-  EXPECT_EQ(names.back(), "self_contact");
+  EXPECT_EQ(names.back(), "dismembered");
   EXPECT_STREQ(statusName(static_cast<EvalStatus>(kEvalStatusKinds)), "unknown");
 }
 

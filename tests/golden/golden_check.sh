@@ -10,7 +10,9 @@
 #   variants:  at NP ranks, evolutions through the other code paths: jump, explicit torques,
 #              self-collision, Chaumont's normalisation and rest rule, tournament / rank / sus
 #              selection, unconnected nodes collected, seed genomes, Sims' swimming in water and
-#              following a light, Chaumont et al.'s walk (hinges only, their neuron set)
+#              following a light, Chaumont et al.'s walk (hinges only, their neuron set), the
+#              springy Pyramids, Walking with Dinosaurs (its DNA, relaxation and breeding; with
+#              dismemberment in the rigid-body world)
 #   simulate:  `cambrian simulate` on the hand-written creatures and random seeds (walk, jump,
 #              swim, follow_light, synthetic): status, fitness, every measure and the step count
 #   resume_v1: a run checkpointed by the cambrian of before the plug-in renovation
@@ -140,6 +142,11 @@ case $mode in
       --evolution.epochs average_velocity+ground_contact_ratio:0.5:lower "${common[@]}" --seed 18
     evolve springy_pyramids --config "$source_dir/jobs/experiments/springy/pyramids-parametric.ini" \
       --springy.organism "$creatures/springy/pyramid.organism" "${common[@]}" --seed 19
+    evolve wwd_turtle --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" \
+      --evolution.seed_genomes "$creatures/wwd/turtle.genome" "${common[@]}" --seed 20
+    evolve wwd_dismemberment --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" \
+      --evolution.seed_genomes "$creatures/wwd/pole.genome" --physics.world rigid_bodies \
+      --physics.joint_breaking 1.05 --task.wwd_condition box_loving "${common[@]}" --seed 21
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do
@@ -190,6 +197,17 @@ case $mode in
         --config "$source_dir/jobs/experiments/springy/snake-frozen.ini" \
         --springy.organism "$creatures/springy/$organism.organism" --task.evaluation_time 3
     done
+    for creature in block defdino pole turtle; do
+      simulate "simulate_wwd_${creature}" --genome "$creatures/wwd/$creature.genome" \
+        --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" --task.evaluation_time 3
+    done
+    simulate simulate_wwd_random --random --seed 6 \
+      --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" --task.evaluation_time 3
+    simulate simulate_wwd_jump --genome "$creatures/wwd/turtle.genome" \
+      --config "$source_dir/jobs/experiments/wwd/jump.ini" --task.evaluation_time 3
+    simulate simulate_wwd_combination --genome "$creatures/wwd/turtle.genome" \
+      --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" --task.name combination \
+      --task.evaluation_time 3
     simulate simulate_random3_synthetic --random --seed 3 --task synthetic \
       --task.synthetic_cost_us 10 --task.synthetic_distribution lognormal
     ;;

@@ -85,5 +85,95 @@ TEST(Episode, AnUnbornCreatureEndsWithItsBirthStatus) {
   EXPECT_EQ(outcome.steps, 0u);
 }
 
+// a tall block and a child held out on a pitching hinge halfway up: the child droops at birth
+Creature drooping() {
+  Creature creature = block();
+  creature.body.parts[0].size = {0.4, 0.2, 0.6};
+  creature.body.parts[0].mass = 48;
+  PartPlan child;
+  child.parent = 0;
+  child.connection = 0;
+  child.depth = 1;
+  child.size = {0.3, 0.1, 0.1};
+  child.mass = 3;
+  child.pose.position = {0.35, 0, 0.2};
+  child.joint = JointType::revolute;
+  child.axes = {Vec3{0, 1, 0}, Vec3{0, 0, 1}, Vec3{1, 0, 0}};
+  child.pivot_in_parent = {0.2, 0, 0.2};
+  child.pivot_in_child = {-0.15, 0, 0};
+  child.joint_limit = {1.0, 1.0, 1.0};
+  child.cross_section = 0.01;
+  creature.body.parts.push_back(child);
+  return creature;
+}
+
+// Walking with Dinosaurs' relaxation: the drooping child settles, on the frictionless ground,
+// and the centre of mass keeps its height for task.relax_steps steps before anything else
+TEST(Episode, RelaxationLastsUntilTheCentreOfMassKeepsItsHeight) {
+  const Creature creature = drooping();
+  PhysicsSettings physics;
+  EpisodeSettings settings;
+  settings.relaxation = true;
+  settings.relax_steps = 120;
+  Episode episode(creature, Environment{}, physics, settings, std::chrono::steady_clock::now(),
+                  nullptr);
+  ASSERT_TRUE(episode.born());
+  const double born_at = episode.simulation().centerOfMass().z;
+  ASSERT_TRUE(episode.relax());
+  const Outcome outcome = episode.finish();
+  EXPECT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
+  // it drooped (the centre of mass sank) and then kept still for the steps asked for
+  EXPECT_LT(episode.simulation().centerOfMass().z, born_at - 0.005);
+  EXPECT_GT(outcome.steps, 120u);
+  EXPECT_LT(outcome.steps,
+            static_cast<std::uint64_t>(std::llround(settings.relax_max_time / physics.time_step)));
+  // off, relax() takes no step
+  settings.relaxation = false;
+  Episode unrelaxed(creature, Environment{}, physics, settings, std::chrono::steady_clock::now(),
+                    nullptr);
+  ASSERT_TRUE(unrelaxed.relax());
+  EXPECT_EQ(unrelaxed.finish().steps, 0u);
+}
+
+// a creature that cannot keep its height for task.relax_steps within task.relax_max_time is
+// discarded: unstable, the worst fitness, a message naming the settings
+TEST(Episode, ACreatureNotRelaxedInTimeIsUnstable) {
+  const Creature creature = drooping();
+  EpisodeSettings settings;
+  settings.relaxation = true;
+  settings.relax_steps = 500;
+  settings.relax_max_time = 0.5;  // 120 steps
+  Episode episode(creature, Environment{}, PhysicsSettings{}, settings,
+                  std::chrono::steady_clock::now(), nullptr);
+  EXPECT_FALSE(episode.relax());
+  const Outcome outcome = episode.finish();
+  EXPECT_EQ(outcome.status, EvalStatus::unstable);
+  EXPECT_EQ(outcome.fitness, kWorstFitness);
+  EXPECT_NE(outcome.message.find("task.relax_max_time"), std::string::npos) << outcome.message;
+}
+
+// the height test: taller than task.max_height is too_tall, the worst fitness; 0 is no limit
+TEST(Episode, ACreatureTallerThanTheHeightLimitIsTooTall) {
+  Creature tower = block();
+  tower.body.parts[0].size = {0.2, 0.2, 2.0};
+  EpisodeSettings settings;
+  for (double limit : {1.5, 2.5, 0.0}) {
+    settings.max_height = limit;
+    Episode episode(tower, Environment{}, PhysicsSettings{}, settings,
+                    std::chrono::steady_clock::now(), nullptr);
+    const bool legal = episode.relax();
+    const Outcome outcome = episode.finish();
+    if (limit == 1.5) {
+      EXPECT_FALSE(legal);
+      EXPECT_EQ(outcome.status, EvalStatus::too_tall);
+      EXPECT_EQ(outcome.fitness, kWorstFitness);
+      EXPECT_NE(outcome.message.find("2 m tall at birth"), std::string::npos) << outcome.message;
+    } else {
+      EXPECT_TRUE(legal) << limit;
+      EXPECT_EQ(outcome.status, EvalStatus::ok) << outcome.message;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cambrian

@@ -301,7 +301,8 @@ TEST(WwdEncoding, SettingsReachTheGrammarAndTheBody) {
   EXPECT_NO_THROW(
       network->build(0.01, creature.body.sensors.size(), creature.body.effectors.size()));
 
-  // wwd.mutation_rate: 1 draws every gene anew, 0 about one gene
+  // wwd.mutation_rate: 1 draws every gene anew, 0 about one gene; mutate's rate multiplies it
+  // (Encoding::scalesOwnMutation), 0 leaves the parent as it is
   Rng genes(3, RngPurpose::test);
   Dna dna(200);
   for (Gene& g : dna)
@@ -309,18 +310,25 @@ TEST(WwdEncoding, SettingsReachTheGrammarAndTheBody) {
   const Genotype parent = makeGenotype(dna);
   auto every = configured({{"wwd.mutation_rate", "1"}});
   auto seed = configured({});
+  EXPECT_TRUE(seed->scalesOwnMutation());
   Rng rng(4, RngPurpose::test);
-  int all = 0, few = 0;
+  int all = 0, few = 0, more = 0, none = 0;
   for (int t = 0; t < 10; ++t) {
-    const Dna a = dnaOf(every->mutate(parent, 0.01, rng));
-    const Dna b = dnaOf(seed->mutate(parent, 0.9, rng));  // parameter_rate not used
+    const Dna a = dnaOf(every->mutate(parent, 1, rng));
+    const Dna b = dnaOf(seed->mutate(parent, 1, rng));
+    const Dna c = dnaOf(seed->mutate(parent, 4, rng));
+    const Dna d = dnaOf(seed->mutate(parent, 0, rng));
     for (std::size_t i = 0; i < dna.size(); ++i) {
       all += a[i] != dna[i] ? 1 : 0;
       few += b[i] != dna[i] ? 1 : 0;
+      more += c[i] != dna[i] ? 1 : 0;
+      none += d[i] != dna[i] ? 1 : 0;
     }
   }
-  EXPECT_GT(all, 1950);
-  EXPECT_LT(few, 40);
+  EXPECT_GT(all, 1950);  // 2,000 genes, each drawn anew (one in a thousand the same)
+  EXPECT_LT(few, 40);    // about 10
+  EXPECT_GT(more, few);  // about 40
+  EXPECT_EQ(none, 0);
 }
 
 // mutation and crossover give valid genomes; graft is not WWD's
@@ -333,7 +341,7 @@ TEST(WwdEncoding, MutationAndCrossoverGoThroughGraftDoesNot) {
   Genotype child = encoding->random(5, 0, 0);
   for (std::uint64_t k = 0; k < 40; ++k) {
     child = k % 2 == 0
-                ? encoding->mutate(child, 0, rng)
+                ? encoding->mutate(child, 1, rng)
                 : encoding->combine(Variation::crossover, child, encoding->random(5, 1, k), rng);
     ASSERT_NO_THROW(encoding->validate(child));
     const Creature creature = encoding->develop(child);
