@@ -80,9 +80,10 @@ int runInspect(int argc, char** argv) {
     std::cout << optionsHelp(cli, schema) << "\n";
     return 0;
   }
-  checkSettings(schema, origins);
   if (genome_paths.empty())
     throw Error(ExitCode::usage, "give a genome file to inspect");
+  adoptGenomeEncoding(genome_paths.front(), schema, origins);
+  checkSettings(schema, origins);
 
   const Encoding& encoding = settings.encoding();
   for (std::size_t i = 0; i < genome_paths.size(); ++i) {

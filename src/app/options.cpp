@@ -1,6 +1,7 @@
 // cambrian: command lines and experiment files into a settings schema; help and reference.
 #include "options.hpp"
 
+#include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
 
 #include "core/small_file.hpp"
@@ -237,6 +238,18 @@ std::string optionsMarkdown(const SettingsSchema& schema) {
     }
   }
   return out.str();
+}
+
+void adoptGenomeEncoding(const std::string& path, SettingsSchema& schema,
+                         const OptionOrigins& origins) {
+  const std::string key = "genome.encoding";
+  if (path.empty() || origins.command_line.count(key) > 0 || origins.config_file.count(key) > 0)
+    return;
+  try {
+    schema.set(key, readGenomeFile(path).encoding().name());
+  } catch (const Error&) {
+    // the command reads the file again and reports what is wrong with it
+  }
 }
 
 }  // namespace cambrian

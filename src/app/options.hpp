@@ -55,6 +55,13 @@ inline const std::set<std::string> kEvolveOnlySections = {"evolution", "run"};
 /// Runs every range check of `schema`; the ConfigError names where the bad value came from.
 void checkSettings(const SettingsSchema& schema, const OptionOrigins& origins);
 
+/// Sets genome.encoding to the encoding of the genome file `path` (told by its tag or its text
+/// header) when neither the command line nor the config file gave it, so that a genome file of
+/// any encoding is simulated and inspected without naming its encoding. A file that cannot be
+/// read leaves the settings as they are (reading it later says why).
+void adoptGenomeEncoding(const std::string& path, SettingsSchema& schema,
+                         const OptionOrigins& origins);
+
 /// A setting's default as a person writes it: "0.0041666666666666666" becomes
 /// "0.00416666666667" (what --help and --help-markdown print).
 std::string readableDefault(const Setting& setting);

@@ -54,6 +54,7 @@ int runSimulate(int argc, char** argv) {
     schema.set("task.name", task_name);
     origins.setOnCommandLine("task.name");
   }
+  adoptGenomeEncoding(genome_path, schema, origins);
   checkSettings(schema, origins);
   std::uint64_t seed = 0;
   if (!parseSeed(seed_text, seed))

@@ -250,6 +250,25 @@ TEST(SimulateCommand, RestCheck) {
 }
 
 // every subcommand has --help
+// a genome file of another encoding is simulated and inspected as its encoding without naming
+// it; an encoding given explicitly is kept, and the genome refused for it
+TEST(SimulateCommand, AGenomeFileBringsItsEncodingUnlessOneIsGiven) {
+  const std::string turtle = kCreatures + "wwd/turtle.genome";
+  auto simulated = runCambrian("simulate --genome " + turtle + kShort);
+  ASSERT_EQ(simulated.exit_code, 0) << simulated.output;
+  EXPECT_NE(simulated.output.find("body       5 parts, 4 joints, 45 neurons"), std::string::npos)
+      << simulated.output;
+  auto inspected = runCambrian("inspect --body-only " + turtle);
+  ASSERT_EQ(inspected.exit_code, 0) << inspected.output;
+  EXPECT_NE(inspected.output.find("# controller: layered"), std::string::npos) << inspected.output;
+  auto refused =
+      runCambrian("simulate --genome.encoding directed_graph --genome " + turtle + kShort);
+  EXPECT_EQ(refused.exit_code, code(ExitCode::input_file)) << refused.output;
+  EXPECT_NE(refused.output.find("a genome of encoding wwd given to encoding directed_graph"),
+            std::string::npos)
+      << refused.output;
+}
+
 TEST(SimulateCommand, Help) {
   for (const char* command : {"simulate --help", "inspect --help", "--help"}) {
     auto result = runCambrian(command);
