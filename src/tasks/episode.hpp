@@ -61,8 +61,9 @@ class Episode {
  public:
   using Clock = std::chrono::steady_clock;
 
-  /// Builds the world for `creature` in `environment`; the evaluation started at `start` (for
-  /// physics.max_wall_seconds). `observer` (may be null) sees the birth and every stride-th step.
+  /// Builds the world for `creature` in `environment` (both must outlive the episode: it keeps
+  /// references); the evaluation started at `start` (for physics.max_wall_seconds). `observer`
+  /// (may be null) sees the birth and every stride-th step.
   Episode(const Creature& creature, const Environment& environment, const PhysicsSettings& physics,
           const EpisodeSettings& settings, Clock::time_point start, FrameObserver* observer);
 

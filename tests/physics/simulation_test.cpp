@@ -461,7 +461,8 @@ TEST(Simulation, HeightIsFromTheLowestPointToTheHighest) {
   on_top.pivot_in_parent = {0, 0, 0.75};
   on_top.pivot_in_child = {0, 0, -0.1};
   plan.parts.push_back(on_top);
-  Simulation simulation(plan, nullptr, Environment{}, PhysicsSettings{});
+  const Environment environment;
+  Simulation simulation(plan, nullptr, environment, PhysicsSettings{});
   ASSERT_EQ(simulation.status(), EvalStatus::ok) << simulation.message();
   EXPECT_NEAR(simulation.height(), 1.7, 1e-9);
 }
@@ -480,7 +481,8 @@ TEST(Simulation, AJointCarryingMoreThanItsBreakingLoadBreaks) {
   physics.joint_breaking = 1.05;
   // the limit holds the child's weight, 3 kg x 9.81 m/s^2 x 0.15 m = 4.4 N m, at a 0.002 N m joint
   plan.parts[1].strength = 0.002;
-  Simulation weak(plan, nullptr, Environment{}, physics);
+  const Environment environment;
+  Simulation weak(plan, nullptr, environment, physics);
   ASSERT_EQ(weak.status(), EvalStatus::ok) << weak.message();
   for (int s = 0; s < 240 && weak.status() == EvalStatus::ok; ++s)
     weak.step(false);
@@ -488,14 +490,14 @@ TEST(Simulation, AJointCarryingMoreThanItsBreakingLoadBreaks) {
   EXPECT_NE(weak.message().find("physics.joint_breaking"), std::string::npos) << weak.message();
   // 1000 N m holds it
   plan.parts[1].strength = 1000;
-  Simulation strong(plan, nullptr, Environment{}, physics);
+  Simulation strong(plan, nullptr, environment, physics);
   for (int s = 0; s < 240; ++s)
     strong.step(false);
   EXPECT_EQ(strong.status(), EvalStatus::ok) << strong.message();
   // without breaking the weak joint holds too
   plan.parts[1].strength = 0.002;
   physics.joint_breaking = 0;
-  Simulation unbreakable(plan, nullptr, Environment{}, physics);
+  Simulation unbreakable(plan, nullptr, environment, physics);
   for (int s = 0; s < 240; ++s)
     unbreakable.step(false);
   EXPECT_EQ(unbreakable.status(), EvalStatus::ok) << unbreakable.message();

@@ -115,7 +115,8 @@ TEST(Episode, RelaxationLastsUntilTheCentreOfMassKeepsItsHeight) {
   EpisodeSettings settings;
   settings.relaxation = true;
   settings.relax_steps = 120;
-  Episode episode(creature, Environment{}, physics, settings, std::chrono::steady_clock::now(),
+  const Environment environment;  // outlives the episodes, which keep a reference
+  Episode episode(creature, environment, physics, settings, std::chrono::steady_clock::now(),
                   nullptr);
   ASSERT_TRUE(episode.born());
   const double born_at = episode.simulation().centerOfMass().z;
@@ -129,7 +130,7 @@ TEST(Episode, RelaxationLastsUntilTheCentreOfMassKeepsItsHeight) {
             static_cast<std::uint64_t>(std::llround(settings.relax_max_time / physics.time_step)));
   // off, relax() takes no step
   settings.relaxation = false;
-  Episode unrelaxed(creature, Environment{}, physics, settings, std::chrono::steady_clock::now(),
+  Episode unrelaxed(creature, environment, physics, settings, std::chrono::steady_clock::now(),
                     nullptr);
   ASSERT_TRUE(unrelaxed.relax());
   EXPECT_EQ(unrelaxed.finish().steps, 0u);
@@ -143,7 +144,8 @@ TEST(Episode, ACreatureNotRelaxedInTimeIsUnstable) {
   settings.relaxation = true;
   settings.relax_steps = 500;
   settings.relax_max_time = 0.5;  // 120 steps
-  Episode episode(creature, Environment{}, PhysicsSettings{}, settings,
+  const Environment environment;
+  Episode episode(creature, environment, PhysicsSettings{}, settings,
                   std::chrono::steady_clock::now(), nullptr);
   EXPECT_FALSE(episode.relax());
   const Outcome outcome = episode.finish();
@@ -157,9 +159,10 @@ TEST(Episode, ACreatureTallerThanTheHeightLimitIsTooTall) {
   Creature tower = block();
   tower.body.parts[0].size = {0.2, 0.2, 2.0};
   EpisodeSettings settings;
+  const Environment environment;
   for (double limit : {1.5, 2.5, 0.0}) {
     settings.max_height = limit;
-    Episode episode(tower, Environment{}, PhysicsSettings{}, settings,
+    Episode episode(tower, environment, PhysicsSettings{}, settings,
                     std::chrono::steady_clock::now(), nullptr);
     const bool legal = episode.relax();
     const Outcome outcome = episode.finish();
