@@ -9,6 +9,7 @@
 #include "evolution/competitive_ranking.hpp"
 #include "evolution/epochs.hpp"
 #include "evolution/evolution_settings.hpp"
+#include "evolution/population.hpp"
 #include "options.hpp"
 #include "parallel/mpi_context.hpp"
 #include "parallel/scheduler.hpp"
@@ -68,13 +69,9 @@ Genotype bestOfLastGeneration(const std::string& path, const Encoding& encoding)
     if (generations.empty())
       throw InputError("the history holds no complete generation");
     const std::uint64_t last = generations.back().generation;
-    for (Individual& row : history.individuals()) {
-      if (row.generation != last || row.outcome.status != EvalStatus::ok)
-        continue;
-      if (!best || row.fitness() > best->fitness() ||
-          (row.fitness() == best->fitness() && row.id < best->id))
-        best = std::move(row);
-    }
+    const std::vector<Individual> rows = history.individuals();
+    if (const Individual* found = bestOk(rows, last))
+      best = *found;
     if (!best)
       throw InputError("no individual with status ok in its last generation (" +
                        std::to_string(last) + ")");

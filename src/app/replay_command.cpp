@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "core/settings.hpp"
+#include "evolution/population.hpp"
 #include "options.hpp"
 #include "physics/physics_settings.hpp"
 #include "store/history.hpp"
@@ -123,14 +124,7 @@ const Individual& bestRow(const std::vector<Individual>& rows,
                        ")");
     }
   }
-  const Individual* best = nullptr;
-  for (const Individual& row : rows) {
-    if (row.outcome.status != EvalStatus::ok || (generation && row.generation != *generation))
-      continue;
-    if (!best || row.fitness() > best->fitness() ||
-        (row.fitness() == best->fitness() && row.id < best->id))
-      best = &row;
-  }
+  const Individual* best = bestOk(rows, generation);
   if (!best) {
     throw InputError(path + ": no individual with status ok" +
                      (generation ? " in generation " + std::to_string(*generation) : "") +

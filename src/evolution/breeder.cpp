@@ -82,13 +82,34 @@ Individual Breeder::eliteCopy(const Individual& parent, std::uint64_t generation
   return copy;
 }
 
+double scaledMutationRate(const Encoding& encoding, double rate, double multiplier) {
+  return encoding.scalesOwnMutation() ? multiplier : std::min(1.0, rate * multiplier);
+}
+
+Individual Breeder::offspring(std::uint64_t g, std::uint64_t slot, Origin origin,
+                              std::vector<std::uint64_t> parents,
+                              const std::function<Genotype(Rng&, int attempt)>& make) {
+  Rng rng(settings_.seed, RngPurpose::variation, g, slot);
+  Individual child;
+  child.generation = g;
+  child.origin = origin;
+  child.parents = std::move(parents);
+  for (int attempt = 0;; ++attempt) {
+    child.genome = encoding_.tidy(make(rng, attempt));
+    if (acceptable(child.genome, attempt))
+      break;
+  }
+  child.id = next_id_++;
+  return child;
+}
+
 Population Breeder::initialPopulation(const std::vector<Genotype>& seeds) {
   Population population;
   population.generation = 0;
   population.individuals.reserve(static_cast<std::size_t>(settings_.population));
   std::uint64_t first_id = next_id_;
   // the mutated copies' rate: evolution.mutation_rate, or 1 x an encoding's own chance
-  const double seed_rate = wwdMutationRate(encoding_, settings_, 1.0);
+  const double seed_rate = scaledMutationRate(encoding_, settings_.mutation_rate, 1);
 
   for (int i = 0; i < settings_.population; ++i) {
     Individual individual;
@@ -175,39 +196,31 @@ Population Breeder::nextGeneration(const Population& evaluated) {
   };
 
   // offspring slot i uses the stream (seed, variation, g, i)
-  int offspring = plan_.mutations + plan_.crossovers + plan_.grafts;
-  for (int i = 0; i < offspring; ++i) {
-    Rng rng(settings_.seed, RngPurpose::variation, g, static_cast<std::uint64_t>(i));
-    Individual child;
-    child.generation = g;
+  const int bred = plan_.mutations + plan_.crossovers + plan_.grafts;
+  for (int i = 0; i < bred; ++i) {
     const Individual* a = &pickParent();
     const Individual* b = i < plan_.mutations ? nullptr : &pickParent();
-    child.parents =
+    std::vector<std::uint64_t> parents =
         b ? std::vector<std::uint64_t>{a->id, b->id} : std::vector<std::uint64_t>{a->id};
-    child.origin = i < plan_.mutations                      ? Origin::mutation
-                   : i < plan_.mutations + plan_.crossovers ? Origin::crossover
-                                                            : Origin::graft;
-    for (int attempt = 0;; ++attempt) {
-      if (child.origin == Origin::mutation) {
-        // asexual: copy and mutate each parameter with mutation_rate (or the encoding's own)
-        child.genome = encoding_.mutate(a->genome, wwdMutationRate(encoding_, settings_, 1.0), rng);
-      } else {
-        // sexual: crossover or graft, then maybe the weaker mutation (Chaumont 5.7)
-        Variation variation =
-            child.origin == Origin::crossover ? Variation::crossover : Variation::graft;
-        child.genome = encoding_.combine(variation, a->genome, b->genome, rng);
-        if (rng.bernoulli(settings_.post_crossover_mutation_chance)) {
-          child.genome = encoding_.mutate(
-              child.genome,
-              encoding_.scalesOwnMutation() ? 1.0 : settings_.post_crossover_mutation_rate, rng);
-        }
-      }
-      child.genome = encoding_.tidy(child.genome);
-      if (acceptable(child.genome, attempt))
-        break;
-    }
-    child.id = next_id_++;
-    next.individuals.push_back(std::move(child));
+    const Origin origin = i < plan_.mutations                      ? Origin::mutation
+                          : i < plan_.mutations + plan_.crossovers ? Origin::crossover
+                                                                   : Origin::graft;
+    next.individuals.push_back(
+        offspring(g, static_cast<std::uint64_t>(i), origin, std::move(parents), [&](Rng& rng, int) {
+          // asexual: copy and mutate each parameter with mutation_rate (or the encoding's own)
+          if (origin == Origin::mutation)
+            return encoding_.mutate(a->genome,
+                                    scaledMutationRate(encoding_, settings_.mutation_rate, 1), rng);
+          // sexual: crossover or graft, then maybe the weaker mutation (Chaumont 5.7)
+          const Variation variation =
+              origin == Origin::crossover ? Variation::crossover : Variation::graft;
+          Genotype child = encoding_.combine(variation, a->genome, b->genome, rng);
+          if (rng.bernoulli(settings_.post_crossover_mutation_chance))
+            child = encoding_.mutate(
+                child, scaledMutationRate(encoding_, settings_.post_crossover_mutation_rate, 1),
+                rng);
+          return child;
+        }));
   }
   return next;
 }

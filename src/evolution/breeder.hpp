@@ -15,6 +15,8 @@
 
 namespace cambrian {
 
+class Rng;
+
 /// How many individuals of a generation each operator makes. Sums to the population size.
 struct BreedingPlan {
   int elites = 0;
@@ -28,6 +30,11 @@ struct BreedingPlan {
 /// The plan for `settings`: elites = round(P * elite_fraction), the rest split by the offspring
 /// fractions (rounded; grafts take the remainder).
 BreedingPlan planBreeding(const EvolutionSettings& settings);
+
+/// The rate a breeding scheme passes to `encoding`.mutate for the per-parameter `rate` scaled by
+/// `multiplier` (1 but under the wwd scheme): `multiplier` itself for an encoding that scales its
+/// own chance per gene (Encoding::scalesOwnMutation), else min(1, rate x multiplier).
+double scaledMutationRate(const Encoding& encoding, double rate, double multiplier);
 
 /// Whether a new genome makes a body that may be born (Chaumont et al. 5.5).
 using ViabilityCheck = std::function<bool(const Genotype&)>;
@@ -76,6 +83,12 @@ class Breeder {
   Population breedWwd(const Population& evaluated);
   // a copy of `parent` in `generation`, with its outcome (its genome did not change)
   Individual eliteCopy(const Individual& parent, std::uint64_t generation);
+  // a new individual of generation `g` in offspring slot `slot`: `make` draws its genome from the
+  // slot's stream (seed, variation, g, slot), which is tidied and drawn again while the viability
+  // check refuses it (same parents, the next draws of the same stream)
+  Individual offspring(std::uint64_t g, std::uint64_t slot, Origin origin,
+                       std::vector<std::uint64_t> parents,
+                       const std::function<Genotype(Rng&, int attempt)>& make);
   bool acceptable(const Genotype& genome, int attempt) const {
     return !viable_ || attempt + 1 >= max_attempts_ || viable_(genome);
   }

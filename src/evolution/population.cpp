@@ -73,4 +73,17 @@ bool Population::allEvaluated() const {
                      [](const Individual& i) { return i.evaluated; });
 }
 
+const Individual* bestOk(const std::vector<Individual>& individuals,
+                         std::optional<std::uint64_t> generation) {
+  const Individual* best = nullptr;
+  for (const Individual& row : individuals) {
+    if (row.outcome.status != EvalStatus::ok || (generation && row.generation != *generation))
+      continue;
+    if (!best || row.fitness() > best->fitness() ||
+        (row.fitness() == best->fitness() && row.id < best->id))
+      best = &row;
+  }
+  return best;
+}
+
 }  // namespace cambrian

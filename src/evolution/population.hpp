@@ -6,6 +6,7 @@
 #include "cambrian/outcome.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,5 +70,11 @@ struct Population {
   /// True when every individual holds an outcome.
   bool allEvaluated() const;
 };
+
+/// The best of `individuals` with status ok — of generation `generation` only, when given: the
+/// highest fitness, ties to the lowest id (replay --best, evolution.seed_history); null when
+/// none is ok.
+const Individual* bestOk(const std::vector<Individual>& individuals,
+                         std::optional<std::uint64_t> generation = std::nullopt);
 
 }  // namespace cambrian

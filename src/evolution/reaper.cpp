@@ -114,19 +114,7 @@ Population Breeder::reap(const Population& evaluated) {
   // scheme (same parents, the next draws of the same stream)
   std::uint64_t slot = 0;
   auto add = [&](Origin origin, std::vector<std::uint64_t> parents, auto make) {
-    Rng rng(settings_.seed, RngPurpose::variation, g, slot);
-    Individual child;
-    child.generation = g;
-    child.origin = origin;
-    child.parents = std::move(parents);
-    for (int attempt = 0;; ++attempt) {
-      child.genome = encoding_.tidy(make(rng, attempt));
-      if (acceptable(child.genome, attempt))
-        break;
-    }
-    child.id = next_id_++;
-    next.individuals.push_back(std::move(child));
-    ++slot;
+    next.individuals.push_back(offspring(g, slot++, origin, std::move(parents), make));
   };
 
   // the other survivors, in a shuffled order, each varied by one operator, in share order

@@ -68,9 +68,7 @@ MutationScale mutationScale(const EvolutionSettings& settings, const Population&
 
 double wwdMutationRate(const Encoding& encoding, const EvolutionSettings& settings,
                        double multiplier) {
-  if (encoding.scalesOwnMutation())
-    return multiplier;
-  return std::min(1.0, settings.mutation_rate * multiplier);
+  return scaledMutationRate(encoding, settings.mutation_rate, multiplier);
 }
 
 void requireWwdOperators(const Encoding& encoding) {
@@ -118,20 +116,15 @@ Population Breeder::breedWwd(const Population& evaluated) {
     const Individual& elite = ranked(static_cast<std::size_t>(selection.below(elites)));
     const Individual& breeder =
         ranked(static_cast<std::size_t>(elites + selection.below(breeders)));
-    Rng rng(settings_.seed, RngPurpose::variation, g, static_cast<std::uint64_t>(i));
-    Individual child;
-    child.generation = g;
-    child.origin = Origin::crossover;
-    child.parents = {breeder.id, elite.id};  // the receiver first, as the generational scheme's
-    for (int attempt = 0;; ++attempt) {
-      // the breeder receives a part of the elite, then every child is mutated
-      Genotype bred = encoding_.combine(Variation::crossover, breeder.genome, elite.genome, rng);
-      child.genome = encoding_.tidy(encoding_.mutate(bred, rate, rng));
-      if (acceptable(child.genome, attempt))
-        break;
-    }
-    child.id = next_id_++;
-    next.individuals.push_back(std::move(child));
+    // the receiver first, as the generational scheme's; the breeder receives a part of the elite,
+    // then every child is mutated
+    next.individuals.push_back(
+        offspring(g, static_cast<std::uint64_t>(i), Origin::crossover, {breeder.id, elite.id},
+                  [&](Rng& rng, int) {
+                    return encoding_.mutate(
+                        encoding_.combine(Variation::crossover, breeder.genome, elite.genome, rng),
+                        rate, rng);
+                  }));
   }
   return next;
 }

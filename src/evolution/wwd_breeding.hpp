@@ -60,10 +60,8 @@ MutationScale mutationScale(const WwdSettings& settings, const std::vector<doubl
 /// of each individual). Under another scheme the deviation still, and multiplier 1.
 MutationScale mutationScale(const EvolutionSettings& settings, const Population& evaluated);
 
-/// The rate argument every scheme passes to `encoding`.mutate for multiplier `multiplier` (1 but
-/// under the wwd scheme): the multiplier itself for an encoding that scales its own chance per
-/// gene (Encoding::scalesOwnMutation: wwd), min(1, evolution.mutation_rate x multiplier) for any
-/// other.
+/// The rate the wwd scheme passes to `encoding`.mutate for multiplier `multiplier`:
+/// scaledMutationRate of evolution.mutation_rate (the multiplier itself for the wwd encoding).
 double wwdMutationRate(const Encoding& encoding, const EvolutionSettings& settings,
                        double multiplier);
 
