@@ -146,11 +146,33 @@ Population Breeder::initialPopulation(const std::vector<Genotype>& seeds) {
   return population;
 }
 
+Population Breeder::restartFromBest(const Population& evaluated) {
+  // "the new population would be created solely from the best creature" (none ok: the top of
+  // the ranking)
+  const std::uint64_t g = evaluated.generation + 1;
+  const Individual* best = bestOk(evaluated.individuals);
+  if (!best)
+    best = &evaluated.individuals[evaluated.ranking().front()];
+  const double seed_rate = scaledMutationRate(encoding_, settings_.mutation_rate, 1);
+  Population next;
+  next.generation = g;
+  next.individuals.reserve(static_cast<std::size_t>(settings_.population));
+  next.individuals.push_back(eliteCopy(*best, g));
+  for (int slot = 1; slot < settings_.population; ++slot)
+    next.individuals.push_back(
+        offspring(g, static_cast<std::uint64_t>(slot), Origin::mutation, {best->id},
+                  [&](Rng& rng, int) { return encoding_.mutate(best->genome, seed_rate, rng); }));
+  return next;
+}
+
 Population Breeder::nextGeneration(const Population& evaluated) {
   if (!evaluated.allEvaluated()) {
     throw std::invalid_argument("nextGeneration: generation " +
                                 std::to_string(evaluated.generation) + " is not fully evaluated");
   }
+  if (settings_.batch_generations > 0 &&
+      (evaluated.generation + 1) % static_cast<std::uint64_t>(settings_.batch_generations) == 0)
+    return restartFromBest(evaluated);
   if (settings_.scheme == BreedingScheme::reaper)
     return reap(evaluated);
   if (settings_.scheme == BreedingScheme::wwd)

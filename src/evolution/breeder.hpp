@@ -58,6 +58,8 @@ class Breeder {
   /// their outcomes (not re-evaluated), then mutation, crossover and graft offspring of selected
   /// parents. Reaper: the kept survivors with their outcomes, the varied survivors, the sown.
   /// Wwd: the elites with their outcomes, then children of an elite and a breeder (planWwd).
+  /// Where a short batch ends (evolution.batch_generations), any scheme: the best ok individual
+  /// with its outcome, then mutated copies of it as initialPopulation makes them from a seed.
   /// Throws std::invalid_argument when `evaluated` is not fully evaluated.
   Population nextGeneration(const Population& evaluated);
 
@@ -79,6 +81,8 @@ class Breeder {
  private:
   // the reaper's next generation (reaper.cpp)
   Population reap(const Population& evaluated);
+  // the first generation of a new short batch: the best of `evaluated` and its mutants
+  Population restartFromBest(const Population& evaluated);
   // the wwd scheme's next generation (wwd_breeding.cpp)
   Population breedWwd(const Population& evaluated);
   // a copy of `parent` in `generation`, with its outcome (its genome did not change)

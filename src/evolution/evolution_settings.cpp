@@ -227,6 +227,11 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
                         "than evolution.population = " +
                         std::to_string(e.population));
   });
+  s.add("evolution.batch_generations", e.batch_generations,
+        "short batches (Walking with Dinosaurs' stops): after every this many generations the "
+        "next starts from the best creature (status ok; ties: lowest id), kept with its outcome, "
+        "and mutated copies of it, as from a seed genome; 0: one batch")
+      .require([&e] { return e.batch_generations >= 0; }, "must be >= 0");
   s.add("evolution.ranking", e.ranking,
         "competitive ranking (Minemonics): measures NAME[:WEIGHT[:higher|lower]]; the fitness "
         "becomes the weighted count of individuals each one beats on each (empty: the task's)");

@@ -107,6 +107,9 @@ struct EvolutionSettings {
   /// a previous run's history.h5: the best individual of its last generation seeds the first
   /// generation too (after the seed_genomes; empty: none)
   std::string seed_history;
+  /// Walking with Dinosaurs' short batches: after every this many generations the population
+  /// starts again from its best creature alone (the best and mutated copies of it); 0: never
+  int batch_generations = 0;
   /// Minemonics' competitive ranking: measures as NAME[:WEIGHT[:higher|lower]]; when given, a
   /// generation's fitness is each individual's weighted rank points (competitive_ranking.hpp)
   std::vector<std::string> ranking;

@@ -176,6 +176,7 @@ class BudgetMotor : public btMultiBodyJointMotor {
 
 void BudgetMotor::createConstraintRows(btMultiBodyConstraintArray& rows,
                                        btMultiBodyJacobianData& data, const btContactSolverInfo&) {
+  internalSetAppliedImpulse(0, 0);  // read by the joint loads: none without a row
   const double bound = getMaxAppliedImpulse();
   if (bound <= 0)
     return;
@@ -235,6 +236,8 @@ void JointLimit::createConstraintRows(btMultiBodyConstraintArray& rows,
   btMultiBody* body = m_bodyA;
   const int link = m_linkA;
   const btMultibodyLink& joint = body->getLink(link);
+  internalSetAppliedImpulse(0, 0);  // read by the joint loads: none for a bound not reached
+  internalSetAppliedImpulse(1, 0);
   setPosition(0, body->getJointPos(link) - m_lowerBound);
   setPosition(1, m_upperBound - body->getJointPos(link));
   for (int bound = 0; bound < 2; ++bound) {
@@ -404,6 +407,7 @@ struct FeatherstoneObjects {
   std::unique_ptr<JointResponses> responses;             // shared by damping, limits and motors
   std::vector<std::unique_ptr<JointLimit>> limits;
   std::vector<std::unique_ptr<BudgetMotor>> motors;  // one per effector (or null)
+  std::vector<JointLimit*> link_limits;              // per Bullet link: its limit (or null)
   std::unique_ptr<ImplicitJointDamping> damping;     // with physics.implicit_damping
   std::unique_ptr<btMultiBody> body;
   FreeBodies objects;  // Environment::objects, then BodyPlan::held
@@ -612,6 +616,7 @@ void FeatherstoneWorld::build(double birth_height) {
   };
 
   // joint limits on every degree of freedom
+  b.link_limits.assign(static_cast<std::size_t>(link_count), nullptr);
   for (int i = 1; i < part_count; ++i) {
     for (int d = 0; d < 3; ++d) {
       int link = dof_link_[i][d];
@@ -621,7 +626,17 @@ void FeatherstoneWorld::build(double birth_height) {
       b.limits.push_back(
           std::make_unique<JointLimit>(&body, link, -limit, limit, *b.responses, islandPart(i)));
       b.world.addMultiBodyConstraint(b.limits.back().get());
+      b.link_limits[static_cast<std::size_t>(link)] = b.limits.back().get();
     }
+  }
+
+  // the effector driving each Bullet link (the joint loads)
+  link_effector_.assign(static_cast<std::size_t>(link_count), -1);
+  for (std::size_t e = 0; e < plan_.effectors.size(); ++e) {
+    const EffectorPlan& effector = plan_.effectors[e];
+    if (effector.kind == EffectorKind::joint && dof_link_[effector.part][effector.dof] >= 0)
+      link_effector_[static_cast<std::size_t>(dof_link_[effector.part][effector.dof])] =
+          static_cast<int>(e);
   }
 
   // saturated motors: one per effector, idle (no impulse) until the controller drives it
@@ -835,6 +850,43 @@ void FeatherstoneWorld::step(std::span<const double> commands) {
     if (correct_momentum_)
       correctMomentum(substep);
     addEffectorWorkBound(commands, substep);
+    if (physics_.joint_breaking > 0 && broken_joint_ < 0)
+      findBrokenJoint(commands, substep);
+  }
+}
+
+double FeatherstoneWorld::jointLoad(int part, std::span<const double> commands,
+                                    double substep) const {
+  // per degree of freedom: the muscle's torque (the explicit one, or the motor row's impulse over
+  // the step) plus the limit rows' (lower bound pushing up, upper pushing down); their norm
+  FeatherstoneObjects& b = *bullet_;
+  double sum = 0;
+  for (int d = 0; d < 3; ++d) {
+    const int link = dof_link_[static_cast<std::size_t>(part)][d];
+    if (link < 0)
+      continue;
+    double torque = 0;
+    if (JointLimit* limit = b.link_limits[static_cast<std::size_t>(link)])
+      torque += (limit->getAppliedImpulse(0) - limit->getAppliedImpulse(1)) / substep;
+    const int e = link_effector_[static_cast<std::size_t>(link)];
+    if (e >= 0 && physics_.actuation == Actuation::saturated_motor)
+      torque += b.motors[static_cast<std::size_t>(e)]->getAppliedImpulse(0) / substep;
+    else if (e >= 0 && !commands.empty())
+      torque += commands[static_cast<std::size_t>(e)] * max_torque_[static_cast<std::size_t>(part)];
+    sum += torque * torque;
+  }
+  return std::sqrt(sum);
+}
+
+void FeatherstoneWorld::findBrokenJoint(std::span<const double> commands, double substep) {
+  // Walking with Dinosaurs' dismemberment: a joint breaks once its load passes
+  // physics.joint_breaking x its strength (the muscle alone never does: it is held to 1 x)
+  for (std::size_t i = 1; i < plan_.parts.size(); ++i) {
+    const double strength = max_torque_[i];
+    if (jointLoad(static_cast<int>(i), commands, substep) > physics_.joint_breaking * strength) {
+      broken_joint_ = static_cast<int>(i);
+      return;
+    }
   }
 }
 

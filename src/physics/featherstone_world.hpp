@@ -55,6 +55,7 @@ class FeatherstoneWorld : public World {
   bool released(int held) const override { return released_.at(static_cast<std::size_t>(held)); }
   double mechanicalEnergy() const override;
   double effectorWorkBound() const override { return work_bound_; }
+  int brokenJoint() const override { return broken_joint_; }
 
  private:
   void build(double birth_height);
@@ -66,6 +67,8 @@ class FeatherstoneWorld : public World {
   void applyDrag(double substep);
   void correctMomentum(double substep);
   void addEffectorWorkBound(std::span<const double> commands, double substep);
+  double jointLoad(int part, std::span<const double> commands, double substep) const;
+  void findBrokenJoint(std::span<const double> commands, double substep);
   void refuse(EvalStatus status, std::string message);
 
   const BodyPlan& plan_;
@@ -90,6 +93,8 @@ class FeatherstoneWorld : public World {
   std::vector<int> virtual_link_part_;  // per Bullet link: the part whose pivot holds it (virtual
                                         // links of multi-DoF joints), or -1 (the part's own link)
   double work_bound_ = 0;               // effectorWorkBound()
+  std::vector<int> link_effector_;      // per Bullet link: the effector driving it, or -1
+  int broken_joint_ = -1;               // brokenJoint()
   double gravity_ = 0;                  // m/s^2 down: the environment's, else physics.gravity
   bool correct_momentum_ = false;       // physics.momentum_correction, where it applies
   double total_mass_ = 0;               // of every body, virtual links included

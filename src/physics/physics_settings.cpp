@@ -52,16 +52,11 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "either way");
   s.add("physics.joint_breaking", p.joint_breaking,
         "a joint breaks, ending the evaluation `dismembered`, once it carries more than this "
-        "times its strength (the rigid-body world; Walking with Dinosaurs: 1.05, 'Tensiles are "
-        "5% stronger than muscle'); 0: joints never break")
+        "times its strength (Walking with Dinosaurs: 1.05, 'Tensiles are 5% stronger than "
+        "muscle'); the rigid-body world: Bullet's breaking impulse on every row of the joint, "
+        "featherstone: the norm of the muscle and limit torques; 0: joints never break")
       .require([&p] { return p.joint_breaking >= 0 && std::isfinite(p.joint_breaking); },
                "must be >= 0 and finite");
-  s.addCheck([&p] {
-    if (p.joint_breaking > 0 && p.world != "rigid_bodies")
-      throw ConfigError("physics.joint_breaking = " + std::to_string(p.joint_breaking) +
-                        ": joints break only in physics.world = rigid_bodies (the " + p.world +
-                        " world's joints cannot)");
-  });
   s.add("physics.friction_anchors", p.friction_anchors,
         "contacts hold their point while inside the friction cone (Bullet friction anchors): a "
         "body at rest stays at rest; false: Bullet's default, resting contacts creep")

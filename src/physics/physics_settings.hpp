@@ -42,9 +42,9 @@ struct PhysicsSettings {
   /// (Sims), or only with the ground and objects (Walking with Dinosaurs; Chaumont et al. test
   /// self-overlap at birth only). Overlap at birth is rejected either way.
   bool self_collision = true;
-  /// A joint breaks once it carries more than this times its strength (the rigid-body world:
-  /// Bullet's breaking impulse, per substep), and the evaluation ends `dismembered`; 0: joints
-  /// never break. Walking with Dinosaurs: "Tensiles are 5% stronger than muscle" (1.05).
+  /// A joint breaks once it carries more than this times its strength, and the evaluation ends
+  /// `dismembered` (the rigid-body world: Bullet's breaking impulse on any row of the joint, per
+  /// substep; featherstone: the norm of its muscle plus limit torques); 0: joints never break. Walking with Dinosaurs: "Tensiles are 5% stronger than muscle" (1.05).
   double joint_breaking = 0;
   /// Contacts keep the point where they began while their friction force stays inside the
   /// friction cone (Bullet's friction anchors), so a body at rest stays where it is. Off (Bullet's

@@ -589,12 +589,13 @@ void RigidBodyWorld::setGroundFriction(double friction) {
   bullet_->ground.setFriction(friction);
 }
 
-bool RigidBodyWorld::jointBroken() const {
-  for (const auto& joint : bullet_->joints) {
-    if (joint && !joint->isEnabled())
-      return true;
+int RigidBodyWorld::brokenJoint() const {
+  // (Bullet disables a joint whose row needed more than its breaking impulse)
+  for (std::size_t i = 0; i < bullet_->joints.size(); ++i) {
+    if (bullet_->joints[i] && !bullet_->joints[i]->isEnabled())
+      return static_cast<int>(i);
   }
-  return false;
+  return -1;
 }
 
 double RigidBodyWorld::lowestPoint() const {

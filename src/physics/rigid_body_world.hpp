@@ -50,7 +50,7 @@ class RigidBodyWorld : public World {
   Vec3 directionInPart(int part, Vec3 point) const override;
   double lowestPoint() const override;
   void setGroundFriction(double friction) override;
-  bool jointBroken() const override;
+  int brokenJoint() const override;
   Transform objectPose(int object) const override;
   Transform heldPose(int held) const override;
   bool released(int held) const override { return released_.at(static_cast<std::size_t>(held)); }

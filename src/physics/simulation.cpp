@@ -144,10 +144,10 @@ void Simulation::monitor() {
   fastest_part_speed_ = std::sqrt(largest_step_sq) / settings_.time_step;
 
   // a joint broken under its load (Walking with Dinosaurs' dismemberment)
-  if (world_->jointBroken()) {
+  if (const int part = world_->brokenJoint(); part >= 0) {
     std::ostringstream message;
-    message << "a joint broke under more than physics.joint_breaking " << settings_.joint_breaking
-            << " x its strength at step " << steps_;
+    message << "the joint of part " << part << " broke under more than physics.joint_breaking "
+            << settings_.joint_breaking << " x its strength at step " << steps_;
     fail(EvalStatus::dismembered, message.str());
     return;
   }

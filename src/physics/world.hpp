@@ -82,9 +82,9 @@ class World {
   /// The ground's friction coefficient from the next step on (Walking with Dinosaurs relaxes a
   /// creature on a frictionless ground, then measures it on the ground it was born on).
   virtual void setGroundFriction(double friction) = 0;
-  /// Whether a joint has broken: carried more than its breaking load (physics.joint_breaking) and
-  /// let its part go; false in a world whose joints cannot break.
-  virtual bool jointBroken() const { return false; }
+  /// The part whose joint has broken under more than its breaking load (physics.joint_breaking x
+  /// its strength), or -1: none has (always, in a world whose joints cannot break).
+  virtual int brokenJoint() const { return -1; }
   /// World pose of free object `object` of the environment (Environment::objects order).
   virtual Transform objectPose(int object) const = 0;
   /// World pose of held object `held` (BodyPlan::held order).

@@ -128,6 +128,49 @@ TEST(Breeder, ElitesAreTheBestCopiedWithTheirOutcomesAndNotReEvaluated) {
   EXPECT_EQ(second.individuals.back().parents.size(), 2u);
 }
 
+// short batches (evolution.batch_generations = 2): generations 1 and 3 are bred as usual,
+// generations 2 and 4 start again from the best (status ok) of the generation before: it first,
+// with its outcome, then mutated copies of it alone; the same under every scheme
+TEST(Breeder, AShortBatchStartsAgainFromTheBestCreatureAlone) {
+  for (BreedingScheme scheme : {BreedingScheme::generational, BreedingScheme::wwd}) {
+    SCOPED_TRACE(static_cast<int>(scheme));
+    EvolutionSettings settings = smallRun();
+    settings.scheme = scheme;
+    settings.batch_generations = 2;
+    Breeder breeder(settings, kEncoding);
+    Population generation = breeder.initialPopulation();
+    for (int g = 1; g <= 4; ++g) {
+      fill(generation, indices(generation.individuals.size(), false));
+      // the best ok individual: make the top of the ranking fail so that the rule shows
+      std::vector<std::size_t> ranking = generation.ranking();
+      generation.individuals[ranking[0]].outcome.status = EvalStatus::unstable;
+      const Individual& best = generation.individuals[ranking[1]];
+      Population next = breeder.nextGeneration(generation);
+      ASSERT_EQ(next.individuals.size(), 20u);
+      const bool restart = g % 2 == 0;
+      std::set<std::uint64_t> parents;
+      for (std::size_t i = 1; i < next.individuals.size(); ++i) {
+        for (std::uint64_t parent : next.individuals[i].parents)
+          parents.insert(parent);
+      }
+      if (restart) {
+        EXPECT_EQ(next.individuals[0].genome, best.genome) << "generation " << g;
+        EXPECT_EQ(next.individuals[0].origin, Origin::elite);
+        EXPECT_TRUE(next.individuals[0].evaluated);
+        EXPECT_EQ(next.individuals[0].outcome.fitness, best.outcome.fitness);
+        EXPECT_EQ(parents, (std::set<std::uint64_t>{best.id})) << "generation " << g;
+        for (std::size_t i = 1; i < next.individuals.size(); ++i) {
+          EXPECT_EQ(next.individuals[i].origin, Origin::mutation);
+          EXPECT_FALSE(next.individuals[i].evaluated);
+        }
+      } else {
+        EXPECT_GT(parents.size(), 1u) << "generation " << g;
+      }
+      generation = std::move(next);
+    }
+  }
+}
+
 TEST(Breeder, EveryIndividualsGenomeBytesAreItsSerializedGenome) {
   // the bytes rank 0 sends, digests and stores are computed once per individual, and elites
   // inherit their parent's

@@ -12,7 +12,8 @@
 #              selection, unconnected nodes collected, seed genomes, Sims' swimming in water and
 #              following a light, Chaumont et al.'s walk (hinges only, their neuron set), the
 #              springy Pyramids, Walking with Dinosaurs (its DNA, relaxation and breeding; with
-#              dismemberment in the rigid-body world)
+#              dismemberment in the rigid-body world; wwd_short_batches: short batches, and
+#              dismemberment in the Featherstone world)
 #   simulate:  `cambrian simulate` on the hand-written creatures and random seeds (walk, jump,
 #              swim, follow_light, synthetic): status, fitness, every measure and the step count
 #   resume_v1: a run checkpointed by the cambrian of before the plug-in renovation
@@ -147,6 +148,9 @@ case $mode in
     evolve wwd_dismemberment --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" \
       --evolution.seed_genomes "$creatures/wwd/pole.genome" --physics.world rigid_bodies \
       --physics.joint_breaking 1.05 --task.wwd_condition box_loving "${common[@]}" --seed 21
+    evolve wwd_short_batches --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" \
+      --evolution.seed_genomes "$creatures/wwd/pole.genome" --evolution.batch_generations 2 \
+      --physics.joint_breaking 1.05 "${common[@]}" --seed 22
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do

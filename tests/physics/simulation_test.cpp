@@ -467,40 +467,50 @@ TEST(Simulation, HeightIsFromTheLowestPointToTheHighest) {
   EXPECT_NEAR(simulation.height(), 1.7, 1e-9);
 }
 
-// dismemberment: in the rigid-body world a joint carrying more than physics.joint_breaking x its
-// strength breaks and the evaluation ends dismembered; a strong enough joint, or no breaking,
-// holds the same load
+// dismemberment, in both worlds: a joint carrying more than physics.joint_breaking x its
+// strength breaks and the evaluation ends dismembered, naming the part; a strong enough joint,
+// or no breaking, holds the same load
 TEST(Simulation, AJointCarryingMoreThanItsBreakingLoadBreaks) {
-  BodyPlan plan;
-  plan.parts.push_back(box({0.4, 0.2, 0.1}, {0, 0, 0}));
-  PartPlan child = test::hingedChild();
-  child.joint_limit = {0.01, 0.01, 0.01};  // the child held out level by its limit
-  plan.parts.push_back(child);
-  PhysicsSettings physics;
-  physics.world = "rigid_bodies";
-  physics.joint_breaking = 1.05;
-  // the limit holds the child's weight, 3 kg x 9.81 m/s^2 x 0.15 m = 4.4 N m, at a 0.002 N m joint
-  plan.parts[1].strength = 0.002;
-  const Environment environment;
-  Simulation weak(plan, nullptr, environment, physics);
-  ASSERT_EQ(weak.status(), EvalStatus::ok) << weak.message();
-  for (int s = 0; s < 240 && weak.status() == EvalStatus::ok; ++s)
-    weak.step(false);
-  EXPECT_EQ(weak.status(), EvalStatus::dismembered);
-  EXPECT_NE(weak.message().find("physics.joint_breaking"), std::string::npos) << weak.message();
-  // 1000 N m holds it
-  plan.parts[1].strength = 1000;
-  Simulation strong(plan, nullptr, environment, physics);
-  for (int s = 0; s < 240; ++s)
-    strong.step(false);
-  EXPECT_EQ(strong.status(), EvalStatus::ok) << strong.message();
-  // without breaking the weak joint holds too
-  plan.parts[1].strength = 0.002;
-  physics.joint_breaking = 0;
-  Simulation unbreakable(plan, nullptr, environment, physics);
-  for (int s = 0; s < 240; ++s)
-    unbreakable.step(false);
-  EXPECT_EQ(unbreakable.status(), EvalStatus::ok) << unbreakable.message();
+  for (const char* world : {"rigid_bodies", "featherstone"}) {
+    SCOPED_TRACE(world);
+    // a 1 m cube standing on the ground, a child on a ball joint held out level from the top of
+    // its +x face by the limits
+    BodyPlan plan;
+    plan.parts.push_back(box({1.0, 1.0, 1.0}, {0, 0, 0}));
+    PartPlan child = test::hingedChild();
+    child.joint = JointType::spherical;
+    child.pose.position = {0.65, 0, 0.45};
+    child.pivot_in_parent = {0.5, 0, 0.45};
+    child.joint_limit = {0.01, 0.01, 0.01};
+    plan.parts.push_back(child);
+    PhysicsSettings physics;
+    physics.world = world;
+    physics.joint_breaking = 1.05;
+    // the limit holds the child's weight, 3 kg x 9.81 m/s^2 x 0.15 m = 4.4 N m, at a 0.002 N m
+    // joint
+    plan.parts[1].strength = 0.002;
+    const Environment environment;
+    Simulation weak(plan, nullptr, environment, physics);
+    ASSERT_EQ(weak.status(), EvalStatus::ok) << weak.message();
+    for (int s = 0; s < 240 && weak.status() == EvalStatus::ok; ++s)
+      weak.step(false);
+    EXPECT_EQ(weak.status(), EvalStatus::dismembered);
+    EXPECT_NE(weak.message().find("the joint of part 1"), std::string::npos) << weak.message();
+    EXPECT_NE(weak.message().find("physics.joint_breaking"), std::string::npos) << weak.message();
+    // 1000 N m holds it
+    plan.parts[1].strength = 1000;
+    Simulation strong(plan, nullptr, environment, physics);
+    for (int s = 0; s < 240; ++s)
+      strong.step(false);
+    EXPECT_EQ(strong.status(), EvalStatus::ok) << strong.message();
+    // without breaking the weak joint holds too
+    plan.parts[1].strength = 0.002;
+    physics.joint_breaking = 0;
+    Simulation unbreakable(plan, nullptr, environment, physics);
+    for (int s = 0; s < 240; ++s)
+      unbreakable.step(false);
+    EXPECT_EQ(unbreakable.status(), EvalStatus::ok) << unbreakable.message();
+  }
 }
 
 }  // namespace

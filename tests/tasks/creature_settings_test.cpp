@@ -103,22 +103,6 @@ TEST(CreatureSettings, RestRuleNeedsRoom) {
   EXPECT_THROW(settings.check(), ConfigError);
 }
 
-// joints break only where they can: physics.joint_breaking in the Featherstone world is refused,
-// naming both keys
-TEST(CreatureSettings, JointBreakingNeedsTheRigidBodyWorld) {
-  CreatureSettings settings;
-  settings.set("physics.joint_breaking", "1.05");
-  try {
-    settings.check();
-    FAIL() << "joint breaking accepted in the Featherstone world";
-  } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("physics.world = rigid_bodies"), std::string::npos)
-        << e.what();
-  }
-  settings.set("physics.world", "rigid_bodies");
-  EXPECT_NO_THROW(settings.check());
-}
-
 TEST(EvaluationSeed, PureFunctionOfRunSeedAndId) {
   EXPECT_EQ(evaluationSeed(1, 5), evaluationSeed(1, 5));
   EXPECT_NE(evaluationSeed(1, 5), evaluationSeed(1, 6));
