@@ -44,7 +44,8 @@ struct PhysicsSettings {
   bool self_collision = true;
   /// A joint breaks once it carries more than this times its strength, and the evaluation ends
   /// `dismembered` (the rigid-body world: Bullet's breaking impulse on any row of the joint, per
-  /// substep; featherstone: the norm of its muscle plus limit torques); 0: joints never break. Walking with Dinosaurs: "Tensiles are 5% stronger than muscle" (1.05).
+  /// substep; featherstone: the norm of its muscle plus limit torques); 0: joints never break.
+  /// Walking with Dinosaurs: "Tensiles are 5% stronger than muscle" (1.05).
   double joint_breaking = 0;
   /// Contacts keep the point where they began while their friction force stays inside the
   /// friction cone (Bullet's friction anchors), so a body at rest stays where it is. Off (Bullet's
