@@ -58,7 +58,7 @@ std::string generationsTsvHeader() {
   return "generation\tbest\tmean\tmedian\tq25\tq75\tworst\tfailed\tbest_id\tevaluations\tworkers\t"
          "rank0_serial_seconds\trank0_cpu_seconds\trank0_dispatch_seconds\tevaluation_span_"
          "seconds\tworker_busy_seconds\t"
-         "worker_idle_seconds\twall_seconds\tepoch\n";
+         "worker_idle_seconds\twall_seconds\tepoch\tfitness_deviation\tmutation_multiplier\n";
 }
 
 std::string generationsTsvRow(const GenerationRecord& r) {
@@ -67,13 +67,13 @@ std::string generationsTsvRow(const GenerationRecord& r) {
   std::snprintf(
       line, sizeof line,
       "%llu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%llu\t%llu\t%d\t%.6f\t%.6f\t%.6f\t"
-      "%.6f\t%.6f\t%.6f\t%.6f\t%llu\n",
+      "%.6f\t%.6f\t%.6f\t%.6f\t%llu\t%.17g\t%.17g\n",
       static_cast<unsigned long long>(r.generation), s.best, s.mean, s.median, s.q25, s.q75,
       s.worst, s.failed, static_cast<unsigned long long>(s.best_id),
       static_cast<unsigned long long>(r.evaluations), r.workers, r.rank0_serial_seconds,
       r.rank0_cpu_seconds, r.rank0_dispatch_seconds, r.evaluation_span_seconds,
       r.worker_busy_seconds, r.worker_idle_seconds, r.wall_seconds,
-      static_cast<unsigned long long>(r.epoch));
+      static_cast<unsigned long long>(r.epoch), r.fitness_deviation, r.mutation_multiplier);
   return line;
 }
 

@@ -41,10 +41,16 @@ TEST(Tables, GenerationRow) {
   r.generation = 3;
   r.workers = 2;
   r.evaluations = 10;
+  r.fitness_deviation = 0.125;
+  r.mutation_multiplier = 2;
   std::string row = generationsTsvRow(r);
   EXPECT_EQ(row.rfind("3\t", 0), 0u);
   EXPECT_NE(row.find("\t10\t2\t"), std::string::npos);
+  // the wwd scheme's diversity and mutation multiplier, last
+  EXPECT_EQ(row.substr(row.size() - 9), "\t0.125\t2\n");
   std::string header = generationsTsvHeader();
+  EXPECT_EQ(header.substr(header.rfind("\tfitness_deviation")),
+            "\tfitness_deviation\tmutation_multiplier\n");
   EXPECT_EQ(std::count(header.begin(), header.end(), '\t'),
             std::count(row.begin(), row.end(), '\t'));
 }
