@@ -99,4 +99,47 @@ void TextLine::expect(std::string_view word, const std::string& field) {
   }
 }
 
+void readStatements(const std::string& text, const std::string& source, const char* header,
+                    int newest, const std::string& statements, const StatementReader& statement) {
+  const std::string expected_header = std::string(header) + " " + std::to_string(newest);
+  bool have_header = false, have_end = false;
+  std::size_t start = 0;
+  int number = 0;
+  while (start < text.size()) {
+    std::size_t stop = text.find('\n', start);
+    if (stop == std::string::npos)
+      stop = text.size();
+    const std::string_view raw(text.data() + start, stop - start);
+    start = stop + 1;
+    ++number;
+    TextLine line(source, number, tokenizeLine(raw));
+    if (!line.more())
+      continue;
+    const std::string keyword(line.next("statement", "a keyword"));
+    if (!have_header) {
+      if (keyword != header)
+        line.fail("expected the header '" + expected_header + "', got '" + keyword + "'");
+      const long long version = line.integer(header, 0, 1LL << 32);
+      if (version > newest)
+        line.fail("format version " + std::to_string(version) + " is newer than this cambrian (" +
+                  std::to_string(newest) + ")");
+      if (version < 1)
+        line.fail("format version " + std::to_string(version) + " does not exist");
+      have_header = true;
+    } else if (have_end) {
+      line.fail("unexpected '" + keyword + "' after `end`");
+    } else if (keyword == "end") {
+      have_end = true;
+    } else if (!statement(keyword, line)) {
+      line.fail("unknown statement '" + keyword + "' (one of: " + statements + ")");
+    }
+    if (line.more())
+      line.fail("unexpected '" + std::string(line.peek()) + "' at the end of the line");
+  }
+  if (!have_header)
+    throw InputError(source + ": empty (expected the header '" + expected_header + "')");
+  if (!have_end)
+    throw InputError(source + ": no `end` line: the file is cut short");
+}
+
 }  // namespace cambrian

@@ -4,6 +4,7 @@
 
 #include "cambrian/math.hpp"
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,5 +48,14 @@ class TextLine {
   std::size_t pos_ = 0;
   std::string where_;
 };
+
+/// Reads a text form of statements: the header "HEADER VERSION" (version 1..`newest`), then one
+/// statement a line, each handed to `statement` with its keyword read, until `end`. Blank and
+/// comment lines are skipped; a token left on a line, a statement after `end`, a missing header
+/// or a missing `end` (a file cut short) throw InputError naming `source` and the line.
+/// `statements` lists the keywords for the unknown-statement message ("dna, end").
+using StatementReader = std::function<bool(const std::string& keyword, TextLine& line)>;
+void readStatements(const std::string& text, const std::string& source, const char* header,
+                    int newest, const std::string& statements, const StatementReader& statement);
 
 }  // namespace cambrian

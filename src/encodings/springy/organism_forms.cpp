@@ -50,6 +50,52 @@ void parseMuscleFields(TextLine& line, Muscle& muscle) {
     line.fail("first must be shorten or lengthen");
 }
 
+using Names = std::map<std::string, int, std::less<>>;
+
+// a `node` statement: its name (new), position and optional fields
+Node readNode(TextLine& line, const Organism& organism, Names& nodes) {
+  Node node;
+  node.name = std::string(line.next("node", "a name"));
+  if (!isWritableName(node.name))
+    line.fail("a node's name is one word of printable characters");
+  line.context("node '" + node.name + "'");
+  if (!nodes.emplace(node.name, static_cast<int>(organism.nodes.size())).second)
+    line.fail("a node of this name comes before");
+  node.position = line.vec3("position");
+  while (line.more()) {
+    const std::string key(line.next("node field", "a field"));
+    if (key == "diameter")
+      node.diameter = line.number("diameter");
+    else if (key == "mass")
+      node.mass = line.number("mass");
+    else
+      line.fail("unknown node field '" + key + "' (one of: diameter, mass)");
+  }
+  return node;
+}
+
+// a `rod` or `muscle` statement: its name (new), its two nodes (named before) and a muscle's
+// fields
+Tube readTube(const std::string& keyword, TextLine& line, const Organism& organism,
+              const Names& nodes, Names& tubes) {
+  Tube tube;
+  tube.kind = keyword == "rod" ? TubeKind::rod : TubeKind::muscle;
+  tube.name = std::string(line.next(keyword, "a name"));
+  if (!isWritableName(tube.name))
+    line.fail("a " + keyword + "'s name is one word of printable characters");
+  line.context(keyword + " '" + tube.name + "'");
+  if (!tubes.emplace(tube.name, static_cast<int>(organism.tubes.size())).second)
+    line.fail("a rod or muscle of this name comes before");
+  tube.a = nodeNamed(line, nodes, "first node");
+  tube.b = nodeNamed(line, nodes, "second node");
+  if (tube.kind == TubeKind::muscle) {
+    // unwritten: resting at its initial length, still
+    tube.muscle.rest_length = initialLength(organism, tube);
+    parseMuscleFields(line, tube.muscle);
+  }
+  return tube;
+}
+
 }  // namespace
 
 bool isWritableName(const std::string& name) {
@@ -89,86 +135,20 @@ std::string organismToText(const Organism& organism) {
 
 Organism parseOrganismText(const std::string& text, const std::string& source) {
   Organism organism;
-  std::map<std::string, int, std::less<>> nodes, tubes;
-  bool have_header = false, have_end = false;
-  std::size_t start = 0;
-  int number = 0;
-  while (start <= text.size()) {
-    std::size_t stop = text.find('\n', start);
-    if (stop == std::string::npos)
-      stop = text.size();
-    const std::string_view raw(text.data() + start, stop - start);
-    start = stop + 1;
-    ++number;
-    TextLine line(source, number, tokenizeLine(raw));
-    if (!line.more())
-      continue;
-    const std::string keyword(line.next("statement", "a keyword"));
-    if (!have_header) {
-      if (keyword != kOrganismTextHeader)
-        line.fail("expected the header '" + std::string(kOrganismTextHeader) + " " +
-                  std::to_string(kOrganismTextVersion) + "', got '" + keyword + "'");
-      const long long version = line.integer(kOrganismTextHeader, 0, 1LL << 32);
-      if (version > kOrganismTextVersion)
-        line.fail("format version " + std::to_string(version) + " is newer than this cambrian (" +
-                  std::to_string(kOrganismTextVersion) + ")");
-      if (version < 1)
-        line.fail("format version " + std::to_string(version) + " does not exist");
-      have_header = true;
-    } else if (have_end) {
-      line.fail("unexpected '" + keyword + "' after `end`");
-    } else if (keyword == "end") {
-      have_end = true;
-    } else if (keyword == "tube_diameter") {
-      organism.tube_diameter = line.number("tube_diameter");
-    } else if (keyword == "node") {
-      Node node;
-      node.name = std::string(line.next("node", "a name"));
-      if (!isWritableName(node.name))
-        line.fail("a node's name is one word of printable characters");
-      line.context("node '" + node.name + "'");
-      if (!nodes.emplace(node.name, static_cast<int>(organism.nodes.size())).second)
-        line.fail("a node of this name comes before");
-      node.position = line.vec3("position");
-      while (line.more()) {
-        const std::string key(line.next("node field", "a field"));
-        if (key == "diameter")
-          node.diameter = line.number("diameter");
-        else if (key == "mass")
-          node.mass = line.number("mass");
-        else
-          line.fail("unknown node field '" + key + "' (one of: diameter, mass)");
-      }
-      organism.nodes.push_back(std::move(node));
-    } else if (keyword == "rod" || keyword == "muscle") {
-      Tube tube;
-      tube.kind = keyword == "rod" ? TubeKind::rod : TubeKind::muscle;
-      tube.name = std::string(line.next(keyword, "a name"));
-      if (!isWritableName(tube.name))
-        line.fail("a " + keyword + "'s name is one word of printable characters");
-      line.context(keyword + " '" + tube.name + "'");
-      if (!tubes.emplace(tube.name, static_cast<int>(organism.tubes.size())).second)
-        line.fail("a rod or muscle of this name comes before");
-      tube.a = nodeNamed(line, nodes, "first node");
-      tube.b = nodeNamed(line, nodes, "second node");
-      if (tube.kind == TubeKind::muscle) {
-        // unwritten: resting at its initial length, still
-        tube.muscle.rest_length = initialLength(organism, tube);
-        parseMuscleFields(line, tube.muscle);
-      }
-      organism.tubes.push_back(std::move(tube));
-    } else {
-      line.fail("unknown statement '" + keyword +
-                "' (one of: tube_diameter, node, rod, muscle, end)");
-    }
-    if (line.more())
-      line.fail("unexpected '" + std::string(line.peek()) + "' at the end of the line");
-  }
-  if (!have_header)
-    throw InputError(source + ": empty (expected the header '" + std::string(kOrganismTextHeader) +
-                     " " + std::to_string(kOrganismTextVersion) + "')");
-  if (!have_end)
-    throw InputError(source + ": no `end` line: the file is cut short");
+  Names nodes, tubes;
+  readStatements(text, source, kOrganismTextHeader, kOrganismTextVersion,
+                 "tube_diameter, node, rod, muscle, end",
+                 [&](const std::string& keyword, TextLine& line) {
+                   if (keyword == "tube_diameter")
+                     organism.tube_diameter = line.number("tube_diameter");
+                   else if (keyword == "node")
+                     organism.nodes.push_back(readNode(line, organism, nodes));
+                   else if (keyword == "rod" || keyword == "muscle")
+                     organism.tubes.push_back(readTube(keyword, line, organism, nodes, tubes));
+                   else
+                     return false;
+                   return true;
+                 });
   return organism;
 }
 

@@ -203,49 +203,19 @@ std::string WwdEncoding::toText(const Genotype& genome) const {
 
 Genotype WwdEncoding::fromText(const std::string& text, const std::string& source) const {
   Dna dna;
-  bool have_header = false, have_end = false;
-  std::size_t start = 0;
-  int number = 0;
-  while (start < text.size()) {
-    std::size_t stop = text.find('\n', start);
-    if (stop == std::string::npos)
-      stop = text.size();
-    const std::string_view raw(text.data() + start, stop - start);
-    start = stop + 1;
-    ++number;
-    TextLine line(source, number, tokenizeLine(raw));
-    if (!line.more())
-      continue;
-    const std::string keyword(line.next("statement", "a keyword"));
-    if (!have_header) {
-      if (keyword != kDnaTextHeader)
-        line.fail("expected the header '" + std::string(kDnaTextHeader) + " " +
-                  std::to_string(kTextVersion) + "', got '" + keyword + "'");
-      const long long version = line.integer(kDnaTextHeader, 1, kTextVersion);
-      (void)version;
-      have_header = true;
-    } else if (have_end) {
-      line.fail("unexpected '" + keyword + "' after `end`");
-    } else if (keyword == "end") {
-      have_end = true;
-    } else if (keyword == "dna") {
-      while (line.more()) {
-        if (dna.size() >= max_genes)
-          line.fail("more than wwd.max_genes = " + std::to_string(max_genes) + " genes");
-        dna.push_back(static_cast<Gene>(
-            line.integer("gene " + std::to_string(dna.size()), 0, kGeneValues - 1)));
-      }
-    } else {
-      line.fail("unknown statement '" + keyword + "' (one of: dna, end)");
-    }
-    if (line.more())
-      line.fail("unexpected '" + std::string(line.peek()) + "' at the end of the line");
-  }
-  if (!have_header)
-    throw InputError(source + ": empty (expected the header '" + std::string(kDnaTextHeader) + " " +
-                     std::to_string(kTextVersion) + "')");
-  if (!have_end)
-    throw InputError(source + ": no `end` line: the file is cut short");
+  readStatements(
+      text, source, kDnaTextHeader, kTextVersion, "dna, end",
+      [&](const std::string& keyword, TextLine& line) {
+        if (keyword != "dna")
+          return false;
+        while (line.more()) {
+          if (dna.size() >= max_genes)
+            line.fail("more than wwd.max_genes = " + std::to_string(max_genes) + " genes");
+          dna.push_back(static_cast<Gene>(
+              line.integer("gene " + std::to_string(dna.size()), 0, kGeneValues - 1)));
+        }
+        return true;
+      });
   return makeGenotype(std::move(dna));
 }
 
