@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,7 +29,8 @@ class GenomeData {
 
 /// A genome of any encoding: the encoding that reads and writes it and the decoded genome, shared
 /// and immutable (copies are cheap). Its byte form — a 4-byte encoding tag, a 32-bit format
-/// version, then the encoding's fields — is made once and kept.
+/// version, then the encoding's fields — is made once and kept. A deferred genotype is made by
+/// its recipe when first read (breeding spread over the dispatch of a generation).
 class Genotype {
  public:
   /// No genome.
@@ -39,8 +41,14 @@ class Genotype {
   Genotype(const Encoding& encoding, std::shared_ptr<const GenomeData> data,
            std::vector<std::uint8_t> bytes);
 
-  /// Whether it holds a genome.
+  /// A genome of `encoding` that `make` (a pure function, holding copies of what it reads) makes
+  /// when it is first read; every copy of the handle shares the one made. `make` must return a
+  /// genome of `encoding`.
+  static Genotype deferred(const Encoding& encoding, std::function<Genotype()> make);
+  /// Whether it holds a genome (made or still to be made).
   explicit operator bool() const { return static_cast<bool>(state_); }
+  /// Whether it is made (not deferred, or read since).
+  bool made() const;
   /// The encoding that wrote it.
   const Encoding& encoding() const;
   /// The decoded genome.
@@ -60,6 +68,8 @@ class Genotype {
 
  private:
   [[noreturn]] void wrongType() const;
+  // makes a deferred genome now
+  void make() const;
   struct State;
   std::shared_ptr<State> state_;
 };

@@ -8,8 +8,11 @@
 namespace cambrian {
 
 void ByteWriter::unsignedLe(std::uint64_t v, int bytes) {
+  // little-endian whatever the host, appended at once (one capacity check, not one per byte)
+  std::uint8_t word[8];
   for (int i = 0; i < bytes; ++i)
-    out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    word[i] = static_cast<std::uint8_t>(v >> (8 * i));
+  out_.insert(out_.end(), word, word + bytes);
 }
 
 void ByteWriter::f64(double v) {

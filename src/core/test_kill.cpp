@@ -42,8 +42,12 @@ void setTestKillPoint(const std::string& spec) {
   armed_generation = generation;
 }
 
+bool testKillArmed(const std::string& point, std::uint64_t generation) {
+  return !armed_point.empty() && point == armed_point && generation == armed_generation;
+}
+
 void testKillPoint(const std::string& point, std::uint64_t generation) {
-  if (armed_point.empty() || point != armed_point || generation != armed_generation)
+  if (!testKillArmed(point, generation))
     return;
   std::fprintf(stderr, "cambrian evolve: run.test_kill_at %s:%llu: SIGKILL\n", point.c_str(),
                static_cast<unsigned long long>(generation));

@@ -88,18 +88,23 @@ double scaledMutationRate(const Encoding& encoding, double rate, double multipli
 
 Individual Breeder::offspring(std::uint64_t g, std::uint64_t slot, Origin origin,
                               std::vector<std::uint64_t> parents,
-                              const std::function<Genotype(Rng&, int attempt)>& make) {
-  Rng rng(settings_.seed, RngPurpose::variation, g, slot);
+                              std::function<Genotype(Rng&, int attempt)> make) {
   Individual child;
+  child.id = next_id_++;
   child.generation = g;
   child.origin = origin;
   child.parents = std::move(parents);
-  for (int attempt = 0;; ++attempt) {
-    child.genome = encoding_.tidy(make(rng, attempt));
-    if (acceptable(child.genome, attempt))
-      break;
-  }
-  child.id = next_id_++;
+  // made when first read (a pure function of the slot's stream, so whenever that is)
+  child.genome = Genotype::deferred(
+      encoding_, [&encoding = encoding_, seed = settings_.seed, g, slot, make = std::move(make),
+                  viable = viable_, max_attempts = max_attempts_] {
+        Rng rng(seed, RngPurpose::variation, g, slot);
+        for (int attempt = 0;; ++attempt) {
+          Genotype genome = encoding.tidy(make(rng, attempt));
+          if (!viable || attempt + 1 >= max_attempts || viable(genome))
+            return genome;
+        }
+      });
   return child;
 }
 
@@ -161,7 +166,9 @@ Population Breeder::restartFromBest(const Population& evaluated) {
   for (int slot = 1; slot < settings_.population; ++slot)
     next.individuals.push_back(
         offspring(g, static_cast<std::uint64_t>(slot), Origin::mutation, {best->id},
-                  [&](Rng& rng, int) { return encoding_.mutate(best->genome, seed_rate, rng); }));
+                  [&encoding = encoding_, genome = best->genome, seed_rate](Rng& rng, int) {
+                    return encoding.mutate(genome, seed_rate, rng);
+                  }));
   return next;
 }
 
@@ -227,20 +234,23 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     const Origin origin = i < plan_.mutations                      ? Origin::mutation
                           : i < plan_.mutations + plan_.crossovers ? Origin::crossover
                                                                    : Origin::graft;
-    next.individuals.push_back(
-        offspring(g, static_cast<std::uint64_t>(i), origin, std::move(parents), [&](Rng& rng, int) {
+    const double mutation_rate = scaledMutationRate(encoding_, settings_.mutation_rate, 1);
+    const double post_chance = settings_.post_crossover_mutation_chance;
+    const double post_rate =
+        scaledMutationRate(encoding_, settings_.post_crossover_mutation_rate, 1);
+    next.individuals.push_back(offspring(
+        g, static_cast<std::uint64_t>(i), origin, std::move(parents),
+        [&encoding = encoding_, origin, first = a->genome, second = b ? b->genome : Genotype{},
+         mutation_rate, post_chance, post_rate](Rng& rng, int) {
           // asexual: copy and mutate each parameter with mutation_rate (or the encoding's own)
           if (origin == Origin::mutation)
-            return encoding_.mutate(a->genome,
-                                    scaledMutationRate(encoding_, settings_.mutation_rate, 1), rng);
+            return encoding.mutate(first, mutation_rate, rng);
           // sexual: crossover or graft, then maybe the weaker mutation (Chaumont 5.7)
           const Variation variation =
               origin == Origin::crossover ? Variation::crossover : Variation::graft;
-          Genotype child = encoding_.combine(variation, a->genome, b->genome, rng);
-          if (rng.bernoulli(settings_.post_crossover_mutation_chance))
-            child = encoding_.mutate(
-                child, scaledMutationRate(encoding_, settings_.post_crossover_mutation_rate, 1),
-                rng);
+          Genotype child = encoding.combine(variation, first, second, rng);
+          if (rng.bernoulli(post_chance))
+            child = encoding.mutate(child, post_rate, rng);
           return child;
         }));
   }

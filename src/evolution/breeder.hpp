@@ -87,12 +87,13 @@ class Breeder {
   Population breedWwd(const Population& evaluated);
   // a copy of `parent` in `generation`, with its outcome (its genome did not change)
   Individual eliteCopy(const Individual& parent, std::uint64_t generation);
-  // a new individual of generation `g` in offspring slot `slot`: `make` draws its genome from the
-  // slot's stream (seed, variation, g, slot), which is tidied and drawn again while the viability
-  // check refuses it (same parents, the next draws of the same stream)
+  // a new individual of generation `g` in offspring slot `slot`, its genome deferred: when first
+  // read, `make` (holding copies of what it reads) draws it from the slot's stream (seed,
+  // variation, g, slot), tidied and drawn again while the viability check refuses it (same
+  // parents, the next draws of the same stream)
   Individual offspring(std::uint64_t g, std::uint64_t slot, Origin origin,
                        std::vector<std::uint64_t> parents,
-                       const std::function<Genotype(Rng&, int attempt)>& make);
+                       std::function<Genotype(Rng&, int attempt)> make);
   bool acceptable(const Genotype& genome, int attempt) const {
     return !viable_ || attempt + 1 >= max_attempts_ || viable_(genome);
   }

@@ -114,7 +114,7 @@ Population Breeder::reap(const Population& evaluated) {
   // scheme (same parents, the next draws of the same stream)
   std::uint64_t slot = 0;
   auto add = [&](Origin origin, std::vector<std::uint64_t> parents, auto make) {
-    next.individuals.push_back(offspring(g, slot++, origin, std::move(parents), make));
+    next.individuals.push_back(offspring(g, slot++, origin, std::move(parents), std::move(make)));
   };
 
   // the other survivors, in a shuffled order, each varied by one operator, in share order
@@ -129,12 +129,14 @@ Population Breeder::reap(const Population& evaluated) {
       const Individual& parent = survivor(varied[next_varied++]);
       if (variation == Variation::graft_feature) {
         const Individual& donor = survivor(reaperPartner(survivors, settings, selection));
-        add(kShareOrigin[k], {parent.id, donor.id}, [&](Rng& rng, int) {
-          return encoding_.combine(variation, parent.genome, donor.genome, rng);
-        });
+        add(kShareOrigin[k], {parent.id, donor.id},
+            [&encoding = encoding_, variation, receiver = parent.genome, giver = donor.genome](
+                Rng& rng, int) { return encoding.combine(variation, receiver, giver, rng); });
       } else {
         add(kShareOrigin[k], {parent.id},
-            [&](Rng& rng, int) { return encoding_.vary(variation, parent.genome, rng); });
+            [&encoding = encoding_, variation, genome = parent.genome](Rng& rng, int) {
+              return encoding.vary(variation, genome, rng);
+            });
       }
     }
   }
@@ -152,19 +154,21 @@ Population Breeder::reap(const Population& evaluated) {
     const Origin origin = settings.crossover == Variation::segment_crossover
                               ? Origin::segment_crossover
                               : Origin::crossover;
-    add(origin, {parent.id, partner.id}, [&](Rng& rng, int) {
-      return encoding_.combine(settings.crossover, parent.genome, partner.genome, rng);
-    });
+    add(origin, {parent.id, partner.id},
+        [&encoding = encoding_, crossover = settings.crossover, first = parent.genome,
+         second = partner.genome](Rng& rng, int) {
+          return encoding.combine(crossover, first, second, rng);
+        });
   }
 
   // sown at random: the streams (seed, random_genome, g * 2^16 + attempt, place in the
   // generation), apart from the first generation's (g = 0, attempt)
   for (int n = 0; n < plan.randoms; ++n) {
     const auto place = static_cast<std::uint64_t>(next.individuals.size());
-    add(Origin::random, {}, [&](Rng&, int attempt) {
-      return encoding_.random(settings_.seed, (g << 16) + static_cast<std::uint64_t>(attempt),
-                              place);
-    });
+    add(Origin::random, {},
+        [&encoding = encoding_, seed = settings_.seed, g, place](Rng&, int attempt) {
+          return encoding.random(seed, (g << 16) + static_cast<std::uint64_t>(attempt), place);
+        });
   }
   return next;
 }

@@ -120,10 +120,10 @@ Population Breeder::breedWwd(const Population& evaluated) {
     // then every child is mutated
     next.individuals.push_back(
         offspring(g, static_cast<std::uint64_t>(i), Origin::crossover, {breeder.id, elite.id},
-                  [&](Rng& rng, int) {
-                    return encoding_.mutate(
-                        encoding_.combine(Variation::crossover, breeder.genome, elite.genome, rng),
-                        rate, rng);
+                  [&encoding = encoding_, mother = breeder.genome, father = elite.genome, rate](
+                      Rng& rng, int) {
+                    return encoding.mutate(
+                        encoding.combine(Variation::crossover, mother, father, rng), rate, rng);
                   }));
   }
   return next;

@@ -10,8 +10,33 @@ namespace cambrian {
 struct Genotype::State {
   const Encoding* encoding = nullptr;
   std::shared_ptr<const GenomeData> data;
-  mutable std::vector<std::uint8_t> bytes;  // empty until bytes() (a byte form is never empty)
+  mutable std::vector<std::uint8_t> bytes;   // empty until bytes() (a byte form is never empty)
+  mutable std::function<Genotype()> recipe;  // a deferred genome's, until it is made
 };
+
+Genotype Genotype::deferred(const Encoding& encoding, std::function<Genotype()> make) {
+  Genotype genotype;
+  genotype.state_ = std::make_shared<State>();
+  genotype.state_->encoding = &encoding;
+  genotype.state_->recipe = std::move(make);
+  return genotype;
+}
+
+bool Genotype::made() const {
+  return state_ && !state_->recipe;
+}
+
+void Genotype::make() const {
+  // the recipe's genome becomes this handle's (and every copy's): data and any byte form
+  Genotype genome = state_->recipe();
+  if (!genome || genome.state_->encoding->tag() != state_->encoding->tag())
+    throw Error(ExitCode::failure, "genotype: a deferred genome was made of another encoding");
+  genome.data();
+  state_->encoding = genome.state_->encoding;
+  state_->data = genome.state_->data;
+  state_->bytes = genome.state_->bytes;
+  state_->recipe = nullptr;
+}
 
 Genotype::Genotype(const Encoding& encoding, std::shared_ptr<const GenomeData> data)
     : state_(std::make_shared<State>()) {
@@ -32,12 +57,16 @@ const Encoding& Genotype::encoding() const {
 }
 
 const GenomeData& Genotype::data() const {
+  if (state_ && state_->recipe)
+    make();
   if (!state_ || !state_->data)
     throw Error(ExitCode::failure, "genotype: empty (no genome)");
   return *state_->data;
 }
 
 const std::vector<std::uint8_t>& Genotype::bytes() const {
+  if (state_->recipe)
+    make();
   if (state_->bytes.empty())
     state_->bytes = encoding().toBytes(data());
   return state_->bytes;

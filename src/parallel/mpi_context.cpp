@@ -8,6 +8,10 @@
 #include <iostream>
 #include <list>
 
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
+
 namespace cambrian {
 
 namespace {
@@ -47,7 +51,7 @@ constexpr int kProbesBeforeSleeping = 4;
 // waits until tryOnce(message) receives one: probe and sleep, since Open MPI's blocking
 // receive would spin a core
 template <class Try>
-Message waitFor(Try tryOnce) {
+Message waitFor(Try tryOnce, long longest_sleep_micros) {
   Message message;
   // a message already on its way often needs a probe or two to be matched: no sleep for those
   for (int attempt = 0; attempt < kProbesBeforeSleeping; ++attempt) {
@@ -55,6 +59,7 @@ Message waitFor(Try tryOnce) {
       return message;
   }
   Backoff backoff;
+  backoff.range(std::min(Backoff::kMin, longest_sleep_micros), longest_sleep_micros);
   while (!tryOnce(message))
     backoff.wait();
   return message;
@@ -83,6 +88,10 @@ MpiContext::MpiContext(int* argc, char*** argv) : posted_(std::make_unique<Poste
   // errors come back as codes, so they become exceptions and then MPI_Abort, never a hang
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+#ifdef __linux__
+  // sleeps of 50 us should not become 100 us (the default slack is 50 us)
+  prctl(PR_SET_TIMERSLACK, 1000UL, 0UL, 0UL, 0UL);
+#endif
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
 
@@ -113,12 +122,27 @@ void MpiContext::post(int destination, Tag tag, std::vector<std::uint8_t> bytes)
 }
 
 std::size_t MpiContext::completePosted() {
-  // test each send; drop the finished ones with their bytes
-  for (auto it = posted_->sends.begin(); it != posted_->sends.end();) {
-    int done = 0;
-    check(MPI_Test(&it->request, &done, MPI_STATUS_IGNORE), "MPI_Test", rank_);
-    it = done ? posted_->sends.erase(it) : std::next(it);
-  }
+  if (posted_->sends.empty())
+    return 0;
+  // one MPI_Testsome over every send (one progress call, however many are under way), then the
+  // finished ones dropped with their bytes
+  std::vector<MPI_Request> requests;
+  requests.reserve(posted_->sends.size());
+  for (const auto& send : posted_->sends)
+    requests.push_back(send.request);
+  std::vector<int> done(requests.size());
+  int count = 0;
+  check(MPI_Testsome(static_cast<int>(requests.size()), requests.data(), &count, done.data(),
+                     MPI_STATUSES_IGNORE),
+        "MPI_Testsome", rank_);
+  if (count == MPI_UNDEFINED || count == 0)
+    return posted_->sends.size();
+  std::vector<char> finished(requests.size(), 0);
+  for (int k = 0; k < count; ++k)
+    finished[static_cast<std::size_t>(done[static_cast<std::size_t>(k)])] = 1;
+  std::size_t i = 0;
+  for (auto it = posted_->sends.begin(); it != posted_->sends.end(); ++i)
+    it = finished[i] ? posted_->sends.erase(it) : std::next(it);
   return posted_->sends.size();
 }
 
@@ -138,12 +162,13 @@ bool MpiContext::tryReceive(Tag tag, Message& out) {
   return receiveWaiting(MPI_ANY_SOURCE, static_cast<int>(tag), rank_, out);
 }
 
-Message MpiContext::receiveAny(int source) {
-  return waitFor([&](Message& message) { return tryReceiveAny(source, message); });
+Message MpiContext::receiveAny(int source, long longest_sleep_micros) {
+  return waitFor([&](Message& message) { return tryReceiveAny(source, message); },
+                 longest_sleep_micros);
 }
 
 Message MpiContext::receive(Tag tag) {
-  return waitFor([&](Message& message) { return tryReceive(tag, message); });
+  return waitFor([&](Message& message) { return tryReceive(tag, message); }, Backoff::kMax);
 }
 
 int MpiContext::allReduceMax(int value) {

@@ -28,7 +28,8 @@ struct Message {
 
 /// Initialises MPI for the life of the object (MPI_Init / MPI_Finalize) and wraps the few calls
 /// evolve needs. Waiting never busy-polls: it probes without blocking and sleeps adaptively
-/// (50 us growing to 1 ms), so rank 0 can share a core with a worker.
+/// (50 us growing to 1 ms), so rank 0 can share a core with a worker. On Linux the process'
+/// timer slack is set to 1 us, so that those sleeps end when they are due.
 class MpiContext {
  public:
   /// Calls MPI_Init unless MPI is already initialised.
@@ -56,8 +57,9 @@ class MpiContext {
   bool tryReceive(Tag tag, Message& out);
   /// Receives a waiting message of any tag from `source` (any rank when -1); false when none.
   bool tryReceiveAny(int source, Message& out);
-  /// Waits (probe + adaptive sleep, no spinning) for a message of any tag from `source`.
-  Message receiveAny(int source);
+  /// Waits (probe + adaptive sleep, no spinning, sleeps of at most `longest_sleep_micros`) for a
+  /// message of any tag from `source`.
+  Message receiveAny(int source, long longest_sleep_micros = 1000);
   /// Waits for a message with `tag` from any rank (probe + adaptive sleep).
   Message receive(Tag tag);
   /// The maximum of `value` over all ranks (collective).
@@ -76,19 +78,24 @@ class MpiContext {
 };
 
 /// Sleeps for an adaptively growing interval: call wait() while nothing has arrived and reset()
-/// when something did. Starts at 50 us and doubles up to 1 ms, unless relaxed.
+/// when something did. Starts at 50 us and doubles up to 1 ms, unless given another range.
 class Backoff {
  public:
   static constexpr long kMin = 50, kMax = 1000;
   /// Sleeps for the current interval and grows it.
   void wait();
-  /// Back to the shortest interval (or the relaxed one).
+  /// The longest sleep for a wait that should end within a quarter of `seconds` (an expected
+  /// evaluation): from kMin to kMax; kMax when `seconds` is not positive.
+  static long quarterOf(double seconds) {
+    return seconds > 0 ? std::clamp(static_cast<long>(seconds * 1e6 / 4), kMin, kMax) : kMax;
+  }
+  /// Back to the shortest interval.
   void reset() { micros_ = floor_; }
-  /// While nothing is urgent: sleep `micros` at once and every time (at least kMax); `0` goes
-  /// back to the default 50 us .. 1 ms.
-  void relax(long micros) {
-    floor_ = micros > 0 ? std::max(micros, kMax) : kMin;
-    ceiling_ = micros > 0 ? floor_ : kMax;
+  /// Sleeps from `floor` growing to `ceiling` microseconds (equal: the same sleep every time);
+  /// the floor is at least 1 us and the ceiling at least the floor.
+  void range(long floor, long ceiling) {
+    floor_ = std::max(1L, floor);
+    ceiling_ = std::max(floor_, ceiling);
     micros_ = std::clamp(micros_, floor_, ceiling_);
   }
 

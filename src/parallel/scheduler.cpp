@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <future>
 #include <iostream>
 #include <numeric>
 #include <utility>
@@ -62,7 +64,8 @@ void DispatchSettings::declareSettings(SettingsSchema& s) {
 }
 
 std::vector<std::size_t> schedulingOrder(const Population& population,
-                                         const DispatchSettings& dispatch, std::uint64_t run_seed) {
+                                         const DispatchSettings& dispatch, std::uint64_t run_seed,
+                                         double expected_seconds) {
   // pending individuals, in population order (ids increasing)
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < population.individuals.size(); ++i) {
@@ -78,6 +81,10 @@ std::vector<std::size_t> schedulingOrder(const Population& population,
       std::swap(order[i - 1], order[rng.below(i)]);
     return order;
   }
+
+  // short creatures: id order, each genome made only when it is handed out
+  if (expected_seconds > 0 && expected_seconds < DispatchPace::kShortSeconds)
+    return order;
 
   // by genome size (the encoding's genes + links), largest or smallest first, ties by id
   bool largest = dispatch.order == DispatchOrder::largest_first;
@@ -122,8 +129,34 @@ EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_
   return span;
 }
 
+int DispatchPace::held(double mean_seconds, std::size_t remaining, int workers) const {
+  // enough queued work to cover rank 0's sleep several times over
+  int depth = in_flight;
+  if (mean_seconds > 0) {
+    double covering = std::ceil(kQueuedSeconds / mean_seconds);
+    depth = static_cast<int>(std::min<double>(1 + covering, std::max(in_flight, kMaxHeld)));
+    depth = std::max(depth, in_flight);
+  }
+  // but one creature more only for every kRemainingPerExtra per worker still to hand out; short
+  // creatures keep one queued to the end (a worker holding one waits a round trip to rank 0 for
+  // each, longer than the imbalance a queued short creature can cause)
+  std::size_t share = 1 + remaining / (kRemainingPerExtra * static_cast<std::size_t>(workers));
+  if (mean_seconds > 0 && mean_seconds < kShortSeconds)
+    share = std::max(share, static_cast<std::size_t>(in_flight));
+  return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(depth), share));
+}
+
+long DispatchPace::relaxedMicros(double mean_seconds, int held) const {
+  if (held <= 1 || mean_seconds <= 0)
+    return 0;
+  // a quarter of the work queued behind the creature being evaluated
+  double queued = (held - 1) * mean_seconds;
+  return std::clamp(static_cast<long>(queued * 1e6 / 4), kMinRelaxedMicros, kMaxRelaxedMicros);
+}
+
 MpiScheduler::MpiScheduler(MpiContext& mpi, const DispatchSettings& dispatch, int in_flight)
-    : mpi_(mpi), dispatch_(dispatch), in_flight_(std::max(1, in_flight)) {
+    : mpi_(mpi), dispatch_(dispatch) {
+  pace_.in_flight = std::max(1, in_flight);
   if (mpi.size() < 2)
     throw Error(ExitCode::mpi, "MpiScheduler needs at least 2 ranks");
 }
@@ -136,7 +169,8 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
                                       const std::function<void()>& meanwhile) {
   EvaluationSpan span;
   span.workers = workers();
-  std::vector<std::size_t> order = schedulingOrder(population, dispatch_, run_seed);
+  std::vector<std::size_t> order =
+      schedulingOrder(population, dispatch_, run_seed, last_mean_seconds_);
   std::vector<char> outstanding_for(population.individuals.size(), 0);
   auto start = Clock::now();
 
@@ -151,21 +185,22 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     ++outstanding;
     ++held[static_cast<std::size_t>(worker)];
   };
-  // a worker holds `in_flight` creatures while plenty remain, one in the tail of the generation,
-  // where a creature queued behind a long one would wait while other workers are idle
-  auto depth = [&] {
-    std::size_t remaining = order.size() - next;
-    return remaining >= kQueueWhileRemainingPerWorker * static_cast<std::size_t>(workers())
-               ? in_flight_
-               : 1;
+  // the mean evaluation so far in this generation, else the last generation's
+  auto mean = [&] {
+    return span.evaluations > 0 ? span.busy_seconds / static_cast<double>(span.evaluations)
+                                : last_mean_seconds_;
   };
+  // creatures a worker should hold now (deep queues for short creatures, one in the tail)
+  auto depth = [&] { return pace_.held(mean(), order.size() - next, workers()); };
   auto fill = [&](int worker) {
-    while (next < order.size() && held[static_cast<std::size_t>(worker)] < depth())
+    int target = depth();
+    while (next < order.size() && held[static_cast<std::size_t>(worker)] < target)
       hand(worker);
   };
   // round by round, so every worker has its first creature before any gets a second
   auto dispatch_start = Clock::now();
-  for (int round = 1; round <= in_flight_; ++round) {
+  const int rounds = depth();
+  for (int round = 1; round <= rounds; ++round) {
     for (int worker = 1; worker < mpi_.size(); ++worker) {
       if (next < order.size() && held[static_cast<std::size_t>(worker)] < std::min(round, depth()))
         hand(worker);
@@ -173,26 +208,36 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
   }
   span.dispatch_seconds += since(dispatch_start);
 
-  // rank 0's own work while every worker has creatures in hand
+  // rank 0's own work, on a thread beside this one, which goes on answering the workers (a
+  // history row or a checkpoint can take longer than a short creature's whole queue)
+  std::future<void> own_work;
   if (meanwhile) {
     mpi_.completePosted();
-    meanwhile();
+    own_work = std::async(std::launch::async, meanwhile);
   }
+  // its error, as soon as it has one; else once it is done
+  auto ownWorkDone = [&](bool wait) {
+    if (own_work.valid() &&
+        (wait || own_work.wait_for(std::chrono::seconds(0)) == std::future_status::ready))
+      own_work.get();
+  };
 
-  // every result is answered with the next creature; wait by probe + sleep
+  // every result is answered with the next creatures; wait by probe + sleep
   Message message;
   Backoff backoff;
   while (outstanding > 0) {
     mpi_.completePosted();
+    ownWorkDone(false);
     auto receive_start = Clock::now();
     if (!mpi_.tryReceive(Tag::result, message)) {
-      // while every worker has its next creature queued, nothing is urgent: sleep a quarter of
-      // a mean evaluation (1 to 20 ms) at a time; in the tail, answer within 1 ms
-      bool queued = depth() > 1 && span.evaluations > 0;
-      double mean_evaluation =
-          queued ? span.busy_seconds / static_cast<double>(span.evaluations) : 0;
-      backoff.relax(queued ? std::clamp(static_cast<long>(250000 * mean_evaluation), 1000L, 20000L)
-                           : 0);
+      // while every worker has work queued, nothing is urgent: sleep a quarter of it; when a
+      // worker holds only the creature it evaluates, answer within a quarter of an evaluation;
+      // once everything is handed out, the generation ends with the last result: look often
+      long relaxed = next < order.size() ? pace_.relaxedMicros(mean(), depth()) : 0;
+      if (relaxed > 0)
+        backoff.range(relaxed, relaxed);
+      else
+        backoff.range(Backoff::kMin, Backoff::quarterOf(mean()));
       backoff.wait();
       continue;
     }
@@ -223,16 +268,23 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     ++span.evaluations;
     --outstanding;
     --held[static_cast<std::size_t>(message.source)];
-    // testing aid: a kill in the middle of the generation
-    if (2 * span.evaluations >= order.size() && 2 * (span.evaluations - 1) < order.size())
+    // testing aid: a kill in the middle of the generation (after rank 0's own work, as in
+    // the point's definition)
+    if (2 * span.evaluations >= order.size() && 2 * (span.evaluations - 1) < order.size()) {
+      if (testKillArmed("evaluation", population.generation))
+        ownWorkDone(true);
       testKillPoint("evaluation", population.generation);
+    }
     fill(message.source);
     span.dispatch_seconds += since(receive_start);
     reportProgress(span.evaluations, order.size());
   }
-  // every result is in, so every request was received
+  // every result is in, so every request was received; rank 0's own work done
   mpi_.waitPosted();
+  ownWorkDone(true);
   span.span_seconds = since(start);
+  if (span.evaluations > 0)
+    last_mean_seconds_ = span.busy_seconds / static_cast<double>(span.evaluations);
   return span;
 }
 

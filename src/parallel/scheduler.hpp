@@ -46,12 +46,14 @@ struct DispatchSettings {
 };
 
 /// Order in which pending individuals are handed out (`dispatch.order`; by default longest
-/// expected first: genes + links descending, ties by id). A pure function of the
-/// population's genomes, ids, evaluated flags and generation, `dispatch` and `run_seed`.
-/// Returns indices into the population.
+/// expected first: genes + links descending, ties by id). Where evaluations are expected to be
+/// short (`expected_seconds` in (0, DispatchPace::kShortSeconds)) the size orders become id
+/// order, so that no genome need be made (bred) before the first is handed out. A pure function
+/// of the population's genomes, ids, evaluated flags and generation, `dispatch`, `run_seed` and
+/// `expected_seconds`. Returns indices into the population.
 std::vector<std::size_t> schedulingOrder(const Population& population,
                                          const DispatchSettings& dispatch = {},
-                                         std::uint64_t run_seed = 0);
+                                         std::uint64_t run_seed = 0, double expected_seconds = 0);
 
 /// Evaluates every individual of a population that has no outcome yet; outcomes are stored by
 /// id, never by arrival order.
@@ -61,7 +63,9 @@ class PopulationEvaluator {
   /// Fills outcome, evaluated, eval_seconds and worker_rank of each unevaluated individual.
   /// `meanwhile` (when set) is called once while the workers evaluate — rank 0's own work that
   /// need not hold them up, such as writing the previous generation to the history — or, with no
-  /// workers to overlap, before evaluating.
+  /// workers to overlap, before evaluating. It may run on a thread of its own, done before
+  /// evaluate() returns (its exception then thrown there): it must not touch MPI, the
+  /// population being evaluated or the progress function's state.
   virtual EvaluationSpan evaluate(Population& population, std::uint64_t run_seed,
                                   const std::function<void()>& meanwhile = {}) = 0;
   /// Ranks that evaluate.
@@ -98,24 +102,50 @@ class InProcessEvaluator : public PopulationEvaluator {
   DispatchSettings dispatch_;
 };
 
-/// Rank 0's self-scheduler: each worker gets `in_flight` creatures (in schedulingOrder) and
-/// each result is answered with the next creature, so a worker has its next creature queued and
-/// never waits for rank 0 to wake up and answer. In the tail of a generation (fewer than
-/// kQueueWhileRemainingPerWorker creatures per worker left to hand out) workers hold one
-/// creature, so none waits behind a long one while others idle. Requests are posted (MPI_Isend);
-/// waits by probe + adaptive sleep, never spinning. Throws Error(mpi) when a worker sends a
-/// malformed or unexpected result.
+/// How many creatures a worker holds and how long rank 0 may sleep, from the expected
+/// evaluation time. A worker holds enough queued work to cover rank 0's sleep several times over
+/// (so short creatures come in deep queues and a worker never waits for rank 0 to wake), but
+/// never more than its share of what is left to hand out (so at the end of a generation no
+/// creature waits behind a queue while other workers are idle). A pure function of its inputs.
+struct DispatchPace {
+  /// Work a worker holds queued beyond the creature it evaluates, seconds.
+  static constexpr double kQueuedSeconds = 0.004;
+  /// Creatures shorter than this are held in_flight deep to the end of a generation.
+  static constexpr double kShortSeconds = 2 * kQueuedSeconds;
+  /// Most creatures a worker holds at once.
+  static constexpr int kMaxHeld = 64;
+  /// Creatures per worker that must remain unhanded for a worker to hold one more.
+  static constexpr std::size_t kRemainingPerExtra = 4;
+  /// Rank 0's sleep while every worker has work queued: a quarter of that work, within these.
+  static constexpr long kMinRelaxedMicros = 50, kMaxRelaxedMicros = 20000;
+
+  /// Creatures each worker holds at least (the one it evaluates and the next).
+  int in_flight = 2;
+
+  /// Creatures a worker should hold when evaluations take `mean_seconds` (0: not known yet) and
+  /// `remaining` creatures of the generation are not yet handed out to any of `workers`.
+  int held(double mean_seconds, std::size_t remaining, int workers) const;
+  /// Rank 0's sleep between looks while workers hold `held` creatures each of `mean_seconds`;
+  /// 0 when a worker holds only the creature it evaluates (then rank 0 answers within a quarter
+  /// of an evaluation: Backoff::quarterOf).
+  long relaxedMicros(double mean_seconds, int held) const;
+};
+
+/// Rank 0's self-scheduler: each worker gets creatures (in schedulingOrder) to the depth
+/// DispatchPace gives, and each result is answered with the next creatures, so a worker has its
+/// next creature queued and never waits for rank 0 to wake up and answer. Requests are posted
+/// (MPI_Isend); waits by probe + a sleep sized by the queued work, never spinning. Throws
+/// Error(mpi) when a worker sends a malformed or unexpected result.
 class MpiScheduler : public PopulationEvaluator {
  public:
-  /// Creatures each worker holds at once: the one it evaluates and the next, queued.
+  /// Creatures each worker holds at least: the one it evaluates and the next, queued.
   static constexpr int kDefaultInFlight = 2;
-  /// Creatures per worker that must remain unhanded for a worker to hold more than one.
-  static constexpr std::size_t kQueueWhileRemainingPerWorker = 4;
   /// `mpi` must have at least two ranks and outlive the scheduler; creatures are handed out in
   /// schedulingOrder(population, dispatch, run seed); `in_flight` >= 1.
   explicit MpiScheduler(MpiContext& mpi, const DispatchSettings& dispatch = {},
                         int in_flight = kDefaultInFlight);
-  /// `meanwhile` runs once every worker holds its first creatures.
+  /// `meanwhile` runs on a thread of its own once every worker holds its first creatures, while
+  /// this thread goes on answering the workers.
   EvaluationSpan evaluate(Population& population, std::uint64_t run_seed,
                           const std::function<void()>& meanwhile = {}) override;
   int workers() const override;
@@ -125,7 +155,8 @@ class MpiScheduler : public PopulationEvaluator {
  private:
   MpiContext& mpi_;
   DispatchSettings dispatch_;
-  int in_flight_;
+  DispatchPace pace_;
+  double last_mean_seconds_ = 0;  // the mean evaluation of the last generation (0: none yet)
   bool stopped_ = false;
 };
 

@@ -72,12 +72,18 @@ EvalResult serveRequest(const Message& message, const WorkerSettings& settings, 
 }
 
 void runWorker(MpiContext& mpi, const WorkerSettings& settings) {
-  // serve requests until told to stop
+  // serve requests until told to stop; waiting for the next, look again within a quarter of an
+  // evaluation (so short creatures are not held up by the worker's own sleep)
+  double busy_seconds = 0;
+  std::uint64_t served = 0;
   for (;;) {
-    Message message = mpi.receiveAny(0);
+    double mean = served > 0 ? busy_seconds / static_cast<double>(served) : 0;
+    Message message = mpi.receiveAny(0, Backoff::quarterOf(mean));
     if (message.tag == Tag::stop)
       return;
     EvalResult result = serveRequest(message, settings, mpi.rank(), std::cerr);
+    busy_seconds += result.outcome.wall_seconds;
+    ++served;
     mpi.send(0, Tag::result, encodeResult(result));
   }
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace cambrian {
 
@@ -40,6 +41,10 @@ void SyntheticTask::declareSettings(SettingsSchema& s) {
                {"fixed", SyntheticDistribution::fixed}},
               "synthetic task: law of the cost around its mean (base + per-gene cost): uniform "
               "(synthetic_noise) | lognormal (synthetic_cv) | fixed");
+  s.addChoice("task.synthetic_work", work,
+              {{"spin", SyntheticWork::spin}, {"sleep", SyntheticWork::sleep}},
+              "synthetic task: spend the cost as CPU work (spin) or asleep (sleep: to measure the "
+              "framework at more ranks than cores); the results are the same");
   s.add("task.synthetic_cv", cv,
         "synthetic task, lognormal distribution: coefficient of variation of the cost (0..4)")
       .require([this] { return cv >= 0 && cv <= 4; }, "must be in [0, 4]");
@@ -89,13 +94,17 @@ Outcome SyntheticTask::evaluateGenome(const Genotype& genome, const Encoding& en
   outcome.joints = static_cast<int>(size.links);
   double cost = costMicroseconds(size, eval_seed);
 
-  // busy work until the steady clock says the cost is spent
+  // busy work (or a sleep) until the steady clock says the cost is spent
   auto start = Clock::now();
   auto budget =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::micro>(cost));
-  volatile double sink = 1;
-  while (Clock::now() - start < budget)
-    sink = spin(sink, 256);
+  if (work == SyntheticWork::sleep) {
+    std::this_thread::sleep_until(start + budget);
+  } else {
+    volatile double sink = 1;
+    while (Clock::now() - start < budget)
+      sink = spin(sink, 256);
+  }
   // no physics steps: everything but wall_seconds stays deterministic
   outcome.steps = 0;
   outcome.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -15,6 +15,12 @@ enum class SyntheticDistribution : std::uint8_t {
   fixed,      ///< the mean cost, always
 };
 
+/// How the synthetic task spends its cost (task.synthetic_work).
+enum class SyntheticWork : std::uint8_t {
+  spin,   ///< real CPU work, timed by a steady clock: the cost of a creature
+  sleep,  ///< a sleep: the framework measured at more ranks than the machine has cores
+};
+
 /// Evaluates genomes without bodies: busy work for a cost drawn per creature, a fitness that is
 /// a smooth function of the genome's sizes.
 class SyntheticTask : public Task {
@@ -25,8 +31,8 @@ class SyntheticTask : public Task {
   void declareSettings(SettingsSchema& schema) override;
   std::vector<MeasureInfo> measures() const override;
   bool needsBody() const override { return false; }
-  /// Busy-works for costMicroseconds() (real CPU work timed by a steady clock, not a sleep),
-  /// then returns status ok, fitness() and the measures "cost_us" (the deterministic target
+  /// Busy-works (or, with SyntheticWork::sleep, sleeps) for costMicroseconds() by a steady
+  /// clock, then returns status ok, fitness() and the measures "cost_us" (the deterministic target
   /// cost) and "nodes". Does not allocate while it works.
   Outcome evaluateGenome(const Genotype& genome, const Encoding& encoding,
                          std::uint64_t eval_seed) const override;
@@ -47,7 +53,8 @@ class SyntheticTask : public Task {
   double cost_per_gene_us = 0;  ///< extra per gene (genome node)
   double noise = 0;             ///< uniform: relative spread of the cost
   SyntheticDistribution distribution = SyntheticDistribution::uniform;  ///< cost law
-  double cv = 0.5;  ///< lognormal: coefficient of variation of the cost
+  double cv = 0.5;                           ///< lognormal: coefficient of variation of the cost
+  SyntheticWork work = SyntheticWork::spin;  ///< how the cost is spent
 };
 
 }  // namespace cambrian

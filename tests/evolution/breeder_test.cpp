@@ -263,6 +263,29 @@ TEST(Breeder, GenerationsDoNotDependOnTheOrderOutcomesArrive) {
   }
 }
 
+// bred genomes are made when first read: in any order, after the breeder is gone, the same
+TEST(Breeder, BredGenomesAreMadeWhenFirstReadTheSameInAnyOrder) {
+  Breeder eager(smallRun(), kEncoding);
+  Population first = eager.initialPopulation();
+  fill(first, indices(first.individuals.size(), false));
+  Population expected = eager.nextGeneration(first);
+  for (const Individual& individual : expected.individuals)
+    individual.genome.bytes();
+
+  Population lazy;
+  {
+    Breeder breeder(smallRun(), kEncoding);
+    breeder.initialPopulation();
+    lazy = breeder.nextGeneration(first);
+  }
+  int deferred = 0;
+  for (const Individual& individual : lazy.individuals)
+    deferred += individual.origin != Origin::elite && !individual.genome.made() ? 1 : 0;
+  EXPECT_EQ(deferred, eager.plan().mutations + eager.plan().crossovers + eager.plan().grafts);
+  for (std::size_t i = lazy.individuals.size(); i-- > 0;)
+    EXPECT_EQ(lazy.individuals[i].genome.bytes(), expected.individuals[i].genome.bytes());
+}
+
 TEST(Breeder, ADifferentSeedBreedsDifferently) {
   EvolutionSettings other = smallRun();
   other.seed = 12;

@@ -32,6 +32,40 @@ TEST(Genotype, CopiesShareTheGenomeAndItsBytes) {
   EXPECT_FALSE(a == Genotype());
 }
 
+// a deferred genome: made by its recipe once, when first read, and shared by every copy
+TEST(Genotype, ADeferredGenomeIsMadeOnceWhenFirstReadAndSharedByItsCopies) {
+  static const graph::DirectedGraphEncoding encoding;
+  int made = 0;
+  Genotype deferred = Genotype::deferred(encoding, [&made] {
+    ++made;
+    return graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 2, 0, 1));
+  });
+  Genotype copy = deferred;
+  EXPECT_TRUE(deferred);
+  EXPECT_FALSE(deferred.made());
+  EXPECT_EQ(&deferred.encoding(), &encoding);  // known before it is made
+  EXPECT_EQ(made, 0);
+  const std::vector<std::uint8_t>& bytes = copy.bytes();
+  EXPECT_EQ(made, 1);
+  EXPECT_TRUE(deferred.made());
+  EXPECT_EQ(&deferred.bytes(), &bytes);
+  EXPECT_EQ(&deferred.data(), &copy.data());
+  EXPECT_EQ(made, 1);
+  EXPECT_TRUE(deferred == graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 2, 0, 1)));
+}
+
+// a recipe that makes a genome of another encoding is an error, said when it is read
+TEST(Genotype, ADeferredGenomeOfAnotherEncodingIsRefused) {
+  struct OtherEncoding : graph::DirectedGraphEncoding {
+    std::array<char, 4> tag() const override { return {'o', 't', 'h', 'r'}; }
+  };
+  static const OtherEncoding other;
+  Genotype deferred = Genotype::deferred(other, [] {
+    return graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 2, 0, 1));
+  });
+  EXPECT_THROW(deferred.data(), Error);
+}
+
 TEST(Genotype, CastsAreChecked) {
   struct Other : GenomeData {};
   Genotype a = graph::makeGenotype(graph::Genome{});

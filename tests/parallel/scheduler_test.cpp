@@ -5,6 +5,7 @@
 #include "core/settings.hpp"
 #include "encodings/directed_graph/encoding.hpp"
 #include "evolution/breeder.hpp"
+#include "parallel/mpi_context.hpp"
 
 #include <gtest/gtest.h>
 
@@ -51,6 +52,59 @@ std::size_t sizeOf(const Population& p, std::size_t i) {
 std::vector<std::size_t> sorted(std::vector<std::size_t> order) {
   std::sort(order.begin(), order.end());
   return order;
+}
+
+// short creatures go in id order (their genomes made as they are handed out), long ones by size
+TEST(Scheduler, ShortCreaturesGoInIdOrder) {
+  Population p = smallPopulation();
+  p.individuals[4].evaluated = true;
+  std::vector<std::size_t> by_id = schedulingOrder(p, DispatchSettings{}, 0, 0.001);
+  std::vector<std::size_t> expected = {0, 1, 2, 3, 5, 6, 7, 8, 9, 10, 11};
+  EXPECT_EQ(by_id, expected);
+  EXPECT_EQ(schedulingOrder(p, DispatchSettings{}, 0, 0.5), schedulingOrder(p));
+  EXPECT_EQ(schedulingOrder(p, DispatchSettings{}, 0, 0), schedulingOrder(p));
+  DispatchSettings shuffled;
+  shuffled.order = DispatchOrder::shuffled;
+  EXPECT_EQ(schedulingOrder(p, shuffled, 3, 0.001), schedulingOrder(p, shuffled, 3));
+}
+
+// how deep each worker's queue is: enough work to cover rank 0's sleeps, never more than a share
+// of what is left, one in the tail of long creatures
+TEST(Scheduler, QueuesAreDeepForShortCreaturesAndShallowInTheTail) {
+  const DispatchPace pace;
+  // not known yet: two (one evaluated, one queued), one in the tail
+  EXPECT_EQ(pace.held(0, 1000, 2), 2);
+  EXPECT_EQ(pace.held(0, 7, 2), 1);
+  // 10 ms creatures: the next one queued; 1 ms: four more; 100 us: 4 ms of work queued
+  EXPECT_EQ(pace.held(0.010, 1000, 2), 2);
+  EXPECT_EQ(pace.held(0.001, 1000, 2), 5);
+  EXPECT_EQ(pace.held(0.0001, 1000, 2), 41);
+  // 10 us: at most kMaxHeld
+  EXPECT_EQ(pace.held(0.00001, 100000, 2), DispatchPace::kMaxHeld);
+  // a share of what is left: 1 + remaining / (4 x workers)
+  EXPECT_EQ(pace.held(0.0001, 80, 2), 11);
+  EXPECT_EQ(pace.held(0.0001, 80, 20), 2);
+  // the tail: long creatures one at a time, short ones keep their next one queued
+  EXPECT_EQ(pace.held(0.5, 3, 2), 1);
+  EXPECT_EQ(pace.held(0.001, 3, 2), 2);
+  EXPECT_EQ(pace.held(0.001, 0, 2), 2);
+}
+
+// rank 0 sleeps a quarter of the work queued behind each worker's current creature
+TEST(Scheduler, RankZeroSleepsAQuarterOfTheQueuedWork) {
+  const DispatchPace pace;
+  EXPECT_EQ(pace.relaxedMicros(0.010, 2), 2500);
+  EXPECT_EQ(pace.relaxedMicros(0.0001, 41), 1000);
+  EXPECT_EQ(pace.relaxedMicros(0.0001, 3), DispatchPace::kMinRelaxedMicros);
+  EXPECT_EQ(pace.relaxedMicros(10, 2), DispatchPace::kMaxRelaxedMicros);
+  // nothing queued or nothing known: no relaxed sleep (rank 0 answers within a quarter of an
+  // evaluation)
+  EXPECT_EQ(pace.relaxedMicros(0.010, 1), 0);
+  EXPECT_EQ(pace.relaxedMicros(0, 5), 0);
+  EXPECT_EQ(Backoff::quarterOf(0.001), 250);
+  EXPECT_EQ(Backoff::quarterOf(0.0001), Backoff::kMin);
+  EXPECT_EQ(Backoff::quarterOf(1), Backoff::kMax);
+  EXPECT_EQ(Backoff::quarterOf(0), Backoff::kMax);
 }
 
 TEST(Scheduler, LargestFirstIsTheDefault) {

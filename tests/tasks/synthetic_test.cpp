@@ -196,6 +196,19 @@ TEST(SyntheticTask, SpendsAtLeastItsCostAndReportsIt) {
   EXPECT_DOUBLE_EQ(outcome.fitness, syntheticFitness(twoNodes()));
 }
 
+// asleep instead of spinning: the same outcome, and at least the cost spent
+TEST(SyntheticTask, SleepingSpendsItsCostWithTheSameOutcome) {
+  SyntheticTask spinning, sleeping;
+  spinning.cost_us = sleeping.cost_us = 2000;
+  sleeping.work = SyntheticWork::sleep;
+  Outcome spun = evaluateSynthetic(twoNodes(), spinning, 4);
+  Outcome slept = evaluateSynthetic(twoNodes(), sleeping, 4);
+  EXPECT_GE(slept.wall_seconds, 0.002);
+  EXPECT_EQ(slept.fitness, spun.fitness);
+  EXPECT_EQ(slept.measures, spun.measures);
+  EXPECT_EQ(slept.status, EvalStatus::ok);
+}
+
 TEST(SyntheticTask, OutcomeApartFromWallTimeIsDeterministic) {
   SyntheticTask task;
   task.cost_us = 200;

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# The framework's overhead per evaluation for short creatures, cambrian beside its peers: 300
+# synthetic creatures of a fixed cost (100 us, 1 ms, 10 ms), 2 workers, the cost spent spinning or
+# asleep. Overhead per evaluation = wall x workers / evaluations - cost (the whole generational
+# loop: breeding, dispatch, history). Peers, where their Debian packages are installed:
+# DEAP with multiprocessing.Pool and with mpi4py.futures (python3-deap, python3-mpi4py), pagmo2's
+# thread batch evaluator (libpagmo-dev). Figures and their reading: docs/performance.md.
+# usage: jobs/bench/dispatch_overhead.sh [path/to/cambrian] [spin|sleep|both]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+cambrian=$(realpath "${1:-build/release/src/app/cambrian}")
+works=${2:-both}
+[ "$works" = both ] && works="spin sleep"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+workers=2
+python=/usr/bin/python3
+
+# generations per cost: a few seconds of work each
+generations() { case $1 in 100) echo 60 ;; 1000) echo 20 ;; *) echo 6 ;; esac; }
+
+# "overhead_us" from evaluations, wall seconds, workers, cost
+overhead() { awk -v e="$1" -v w="$2" -v n="$3" -v c="$4" 'BEGIN { printf "%.1f", w * n / e * 1e6 - c }'; }
+
+# the peers that are installed
+peers=()
+if $python -c 'import deap' 2> /dev/null; then
+  peers+=(deap_pool)
+  $python -c 'import mpi4py' 2> /dev/null && peers+=(deap_mpi4py)
+fi
+if [ -f /usr/include/pagmo/batch_evaluators/thread_bfe.hpp ] &&
+  g++ -O2 -std=c++17 jobs/bench/peers/pagmo_overhead.cpp -o "$work/pagmo_overhead" -lpagmo -ltbb \
+    -lboost_serialization 2> "$work/pagmo_build.txt"; then
+  peers+=(pagmo_thread_bfe)
+fi
+
+printf "%-6s %-9s %-18s %11s %9s %13s %14s\n" work "cost (us)" system evaluations "wall (s)" \
+  "overhead (us)" "rank 0 CPU %"
+for spend in $works; do
+  for cost in 100 1000 10000; do
+    g=$(generations "$cost")
+    # cambrian: the generations' own times (startup and the final tables left out, as for peers)
+    out="$work/cambrian-$spend-$cost"
+    mpirun -np $((workers + 1)) --oversubscribe "$cambrian" evolve \
+      --config jobs/experiments/synthetic.ini --task.synthetic_distribution fixed \
+      --task.synthetic_cost_us "$cost" --task.synthetic_work "$spend" \
+      --evolution.generations "$g" --quiet --out "$out" > "$out.txt"
+    read -r evals wall cpu <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+      { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"] }
+      END { printf "%d %.6f %.6f", e, w, c }' "$out/generations.tsv")"
+    printf "%-6s %-9s %-18s %11s %9.3f %13s %14.1f\n" "$spend" "$cost" cambrian "$evals" "$wall" \
+      "$(overhead "$evals" "$wall" $workers "$cost")" "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
+    for peer in "${peers[@]}"; do
+      case $peer in
+        deap_pool) line=$($python jobs/bench/peers/deap_overhead.py --map pool --workers $workers \
+          --cost-us "$cost" --work "$spend" --generations "$g") ;;
+        deap_mpi4py) line=$(mpirun -np $((workers + 1)) --oversubscribe $python -m mpi4py.futures \
+          jobs/bench/peers/deap_overhead.py --map mpi --workers $workers --cost-us "$cost" \
+          --work "$spend" --generations "$g") ;;
+        pagmo_thread_bfe) line=$("$work/pagmo_overhead" "$cost" "$spend" 300 "$g") ;;
+      esac
+      read -r _ evals _ wall _ threads <<< "$line"
+      printf "%-6s %-9s %-18s %11s %9.3f %13s %14s\n" "$spend" "$cost" "$peer" "$evals" "$wall" \
+        "$(overhead "$evals" "$wall" "$threads" "$cost")" "-"
+    done
+  done
+done
