@@ -2,14 +2,18 @@
 # The framework's overhead per evaluation for short creatures, cambrian beside its peers: 300
 # synthetic creatures of a fixed cost (100 us, 1 ms, 10 ms), 2 workers, the cost spent spinning or
 # asleep. Overhead per evaluation = wall x workers / evaluations - cost (the whole generational
-# loop: breeding, dispatch, history). Peers, where their Debian packages are installed:
+# loop: breeding, dispatch, history); for cambrian also beyond the evaluations' own measured time
+# (wall x workers - their busy time, per evaluation: what a sleep's wake-up latency does not
+# count in). Peers, where their Debian packages are installed:
 # DEAP with multiprocessing.Pool and with mpi4py.futures (python3-deap, python3-mpi4py), pagmo2's
 # thread batch evaluator (libpagmo-dev). Figures and their reading: docs/performance.md.
-# usage: jobs/bench/dispatch_overhead.sh [path/to/cambrian] [spin|sleep|both]
+# usage: jobs/bench/dispatch_overhead.sh [path/to/cambrian] [spin|sleep|both] [quick]
+#   quick: two generations per cost (a smoke test; the figures mean little)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cambrian=$(realpath "${1:-build/release/src/app/cambrian}")
 works=${2:-both}
+quick=${3:-}
 [ "$works" = both ] && works="spin sleep"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 work=$(mktemp -d)
@@ -18,7 +22,10 @@ workers=2
 python=/usr/bin/python3
 
 # generations per cost: a few seconds of work each
-generations() { case $1 in 100) echo 60 ;; 1000) echo 20 ;; *) echo 6 ;; esac; }
+generations() {
+  [ "$quick" = quick ] && { echo 2; return; }
+  case $1 in 100) echo 60 ;; 1000) echo 20 ;; *) echo 10 ;; esac
+}
 
 # "overhead_us" from evaluations, wall seconds, workers, cost
 overhead() { awk -v e="$1" -v w="$2" -v n="$3" -v c="$4" 'BEGIN { printf "%.1f", w * n / e * 1e6 - c }'; }
@@ -35,8 +42,8 @@ if [ -f /usr/include/pagmo/batch_evaluators/thread_bfe.hpp ] &&
   peers+=(pagmo_thread_bfe)
 fi
 
-printf "%-6s %-9s %-18s %11s %9s %13s %14s\n" work "cost (us)" system evaluations "wall (s)" \
-  "overhead (us)" "rank 0 CPU %"
+printf "%-6s %-9s %-18s %11s %9s %13s %17s %13s\n" work "cost (us)" system evaluations "wall (s)" \
+  "overhead (us)" "beyond eval (us)" "rank 0 CPU %"
 for spend in $works; do
   for cost in 100 1000 10000; do
     g=$(generations "$cost")
@@ -46,11 +53,14 @@ for spend in $works; do
       --config jobs/experiments/synthetic.ini --task.synthetic_distribution fixed \
       --task.synthetic_cost_us "$cost" --task.synthetic_work "$spend" \
       --evolution.generations "$g" --quiet --out "$out" > "$out.txt"
-    read -r evals wall cpu <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
-      { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"] }
-      END { printf "%d %.6f %.6f", e, w, c }' "$out/generations.tsv")"
-    printf "%-6s %-9s %-18s %11s %9.3f %13s %14.1f\n" "$spend" "$cost" cambrian "$evals" "$wall" \
-      "$(overhead "$evals" "$wall" $workers "$cost")" "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
+    read -r evals wall cpu busy <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+      { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"]
+        b += $col["worker_busy_seconds"] }
+      END { printf "%d %.6f %.6f %.6f", e, w, c, b }' "$out/generations.tsv")"
+    printf "%-6s %-9s %-18s %11s %9.3f %13s %17s %13.1f\n" "$spend" "$cost" cambrian "$evals" "$wall" \
+      "$(overhead "$evals" "$wall" $workers "$cost")" \
+      "$(awk -v e="$evals" -v w="$wall" -v b="$busy" -v n=$workers 'BEGIN { printf "%.1f", (w * n - b) / e * 1e6 }')" \
+      "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
     for peer in "${peers[@]}"; do
       case $peer in
         deap_pool) line=$($python jobs/bench/peers/deap_overhead.py --map pool --workers $workers \
@@ -61,8 +71,8 @@ for spend in $works; do
         pagmo_thread_bfe) line=$("$work/pagmo_overhead" "$cost" "$spend" 300 "$g") ;;
       esac
       read -r _ evals _ wall _ threads <<< "$line"
-      printf "%-6s %-9s %-18s %11s %9.3f %13s %14s\n" "$spend" "$cost" "$peer" "$evals" "$wall" \
-        "$(overhead "$evals" "$wall" "$threads" "$cost")" "-"
+      printf "%-6s %-9s %-18s %11s %9.3f %13s %17s %13s\n" "$spend" "$cost" "$peer" "$evals" "$wall" \
+        "$(overhead "$evals" "$wall" "$threads" "$cost")" "-" "-"
     done
   done
 done

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
@@ -51,17 +52,28 @@ constexpr int kProbesBeforeSleeping = 4;
 // waits until tryOnce(message) receives one: probe and sleep, since Open MPI's blocking
 // receive would spin a core
 template <class Try>
-Message waitFor(Try tryOnce, long longest_sleep_micros) {
+Message waitFor(Try tryOnce, long longest_sleep_micros, long urgent_micros) {
   Message message;
   // a message already on its way often needs a probe or two to be matched: no sleep for those
   for (int attempt = 0; attempt < kProbesBeforeSleeping; ++attempt) {
     if (tryOnce(message))
       return message;
   }
+  // short sleeps while the message is likely to come soon, then longer ones
   Backoff backoff;
-  backoff.range(std::min(Backoff::kMin, longest_sleep_micros), longest_sleep_micros);
-  while (!tryOnce(message))
+  const long first =
+      urgent_micros > 0 ? std::min(urgent_micros, longest_sleep_micros) : longest_sleep_micros;
+  backoff.range(std::min(Backoff::kMin, first), first);
+  auto start = std::chrono::steady_clock::now();
+  bool patient = first == longest_sleep_micros;
+  while (!tryOnce(message)) {
     backoff.wait();
+    if (!patient && std::chrono::steady_clock::now() - start >
+                        std::chrono::microseconds(MpiContext::kUrgentForMicros)) {
+      backoff.range(first, longest_sleep_micros);
+      patient = true;
+    }
+  }
   return message;
 }
 
@@ -162,13 +174,13 @@ bool MpiContext::tryReceive(Tag tag, Message& out) {
   return receiveWaiting(MPI_ANY_SOURCE, static_cast<int>(tag), rank_, out);
 }
 
-Message MpiContext::receiveAny(int source, long longest_sleep_micros) {
+Message MpiContext::receiveAny(int source, long longest_sleep_micros, long urgent_micros) {
   return waitFor([&](Message& message) { return tryReceiveAny(source, message); },
-                 longest_sleep_micros);
+                 longest_sleep_micros, urgent_micros);
 }
 
 Message MpiContext::receive(Tag tag) {
-  return waitFor([&](Message& message) { return tryReceive(tag, message); }, Backoff::kMax);
+  return waitFor([&](Message& message) { return tryReceive(tag, message); }, Backoff::kMax, 0);
 }
 
 int MpiContext::allReduceMax(int value) {

@@ -57,9 +57,12 @@ class MpiContext {
   bool tryReceive(Tag tag, Message& out);
   /// Receives a waiting message of any tag from `source` (any rank when -1); false when none.
   bool tryReceiveAny(int source, Message& out);
+  /// How long a wait counts as urgent (receiveAny's `urgent_micros`).
+  static constexpr long kUrgentForMicros = 20000;
   /// Waits (probe + adaptive sleep, no spinning, sleeps of at most `longest_sleep_micros`) for a
-  /// message of any tag from `source`.
-  Message receiveAny(int source, long longest_sleep_micros = 1000);
+  /// message of any tag from `source`; with `urgent_micros` > 0, sleeps of at most that for the
+  /// first kUrgentForMicros of the wait (a message due soon is taken up soon).
+  Message receiveAny(int source, long longest_sleep_micros = 1000, long urgent_micros = 0);
   /// Waits for a message with `tag` from any rank (probe + adaptive sleep).
   Message receive(Tag tag);
   /// The maximum of `value` over all ranks (collective).

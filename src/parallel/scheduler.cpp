@@ -48,6 +48,22 @@ void store(Individual& individual, const Outcome& outcome, int rank) {
   individual.worker_rank = rank;
 }
 
+// the individuals without an outcome, in population order (ids increasing)
+std::vector<std::size_t> pendingInIdOrder(const Population& population) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < population.individuals.size(); ++i) {
+    if (!population.individuals[i].evaluated)
+      order.push_back(i);
+  }
+  return order;
+}
+
+// whether any of the pending individuals' genomes is still to be made (bred)
+bool anyToBeMade(const Population& population) {
+  return std::any_of(population.individuals.begin(), population.individuals.end(),
+                     [](const Individual& i) { return !i.evaluated && !i.genome.made(); });
+}
+
 }  // namespace
 
 void DispatchSettings::declareSettings(SettingsSchema& s) {
@@ -66,12 +82,7 @@ void DispatchSettings::declareSettings(SettingsSchema& s) {
 std::vector<std::size_t> schedulingOrder(const Population& population,
                                          const DispatchSettings& dispatch, std::uint64_t run_seed,
                                          double expected_seconds) {
-  // pending individuals, in population order (ids increasing)
-  std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < population.individuals.size(); ++i) {
-    if (!population.individuals[i].evaluated)
-      order.push_back(i);
-  }
+  std::vector<std::size_t> order = pendingInIdOrder(population);
 
   // shuffled: Fisher-Yates from the generation's own stream, whatever the results so far
   if (dispatch.order == DispatchOrder::shuffled) {
@@ -169,8 +180,16 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
                                       const std::function<void()>& meanwhile) {
   EvaluationSpan span;
   span.workers = workers();
+  // the hand-out order; where it is by size and genomes are still to be bred, the first rounds go
+  // in id order (bred one by one as they go out) and the rest are bred and sorted while those
+  // evaluate
+  const bool sort_later =
+      dispatch_.order != DispatchOrder::shuffled &&
+      !(last_mean_seconds_ > 0 && last_mean_seconds_ < DispatchPace::kShortSeconds) &&
+      anyToBeMade(population);
   std::vector<std::size_t> order =
-      schedulingOrder(population, dispatch_, run_seed, last_mean_seconds_);
+      sort_later ? pendingInIdOrder(population)
+                 : schedulingOrder(population, dispatch_, run_seed, last_mean_seconds_);
   std::vector<char> outstanding_for(population.individuals.size(), 0);
   auto start = Clock::now();
 
@@ -206,6 +225,15 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
         hand(worker);
     }
   }
+  if (sort_later) {
+    // the rest in the scheduling order (which breeds them), the creatures handed out left out
+    std::vector<std::size_t> rest = schedulingOrder(population, dispatch_, run_seed);
+    order.resize(next);
+    for (std::size_t index : rest) {
+      if (!outstanding_for[index])
+        order.push_back(index);
+    }
+  }
   span.dispatch_seconds += since(dispatch_start);
 
   // rank 0's own work, on a thread beside this one, which goes on answering the workers (a
@@ -231,13 +259,14 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     auto receive_start = Clock::now();
     if (!mpi_.tryReceive(Tag::result, message)) {
       // while every worker has work queued, nothing is urgent: sleep a quarter of it; when a
-      // worker holds only the creature it evaluates, answer within a quarter of an evaluation;
-      // once everything is handed out, the generation ends with the last result: look often
+      // worker holds only the creature it evaluates (it may be waiting for the next), and once
+      // everything is handed out (the generation ends with the last result), look often
       long relaxed = next < order.size() ? pace_.relaxedMicros(mean(), depth()) : 0;
       if (relaxed > 0)
         backoff.range(relaxed, relaxed);
       else
-        backoff.range(Backoff::kMin, Backoff::quarterOf(mean()));
+        backoff.range(Backoff::kMin,
+                      std::min(Backoff::quarterOf(mean()), DispatchPace::kUrgentMicros));
       backoff.wait();
       continue;
     }

@@ -118,6 +118,9 @@ struct DispatchPace {
   static constexpr std::size_t kRemainingPerExtra = 4;
   /// Rank 0's sleep while every worker has work queued: a quarter of that work, within these.
   static constexpr long kMinRelaxedMicros = 50, kMaxRelaxedMicros = 20000;
+  /// Rank 0's longest sleep otherwise (a worker may be waiting): a quarter of an evaluation, at
+  /// most this.
+  static constexpr long kUrgentMicros = 100;
 
   /// Creatures each worker holds at least (the one it evaluates and the next).
   int in_flight = 2;
@@ -127,7 +130,7 @@ struct DispatchPace {
   int held(double mean_seconds, std::size_t remaining, int workers) const;
   /// Rank 0's sleep between looks while workers hold `held` creatures each of `mean_seconds`;
   /// 0 when a worker holds only the creature it evaluates (then rank 0 answers within a quarter
-  /// of an evaluation: Backoff::quarterOf).
+  /// of an evaluation, Backoff::quarterOf, and at most kUrgentMicros).
   long relaxedMicros(double mean_seconds, int held) const;
 };
 

@@ -71,14 +71,19 @@ EvalResult serveRequest(const Message& message, const WorkerSettings& settings, 
   return evaluateRequest(request, settings, rank, log);
 }
 
+namespace {
+// a waiting worker's longest sleep while its next creature is likely on its way
+constexpr long kWorkerUrgentMicros = 100;
+}  // namespace
+
 void runWorker(MpiContext& mpi, const WorkerSettings& settings) {
-  // serve requests until told to stop; waiting for the next, look again within a quarter of an
-  // evaluation (so short creatures are not held up by the worker's own sleep)
+  // serve requests until told to stop; waiting for the next, look again within 100 us for the
+  // first 20 ms (rank 0 answers a result at once), then within a quarter of an evaluation
   double busy_seconds = 0;
   std::uint64_t served = 0;
   for (;;) {
     double mean = served > 0 ? busy_seconds / static_cast<double>(served) : 0;
-    Message message = mpi.receiveAny(0, Backoff::quarterOf(mean));
+    Message message = mpi.receiveAny(0, Backoff::quarterOf(mean), kWorkerUrgentMicros);
     if (message.tag == Tag::stop)
       return;
     EvalResult result = serveRequest(message, settings, mpi.rank(), std::cerr);
