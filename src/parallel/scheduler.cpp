@@ -196,8 +196,12 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
   // creatures to every worker
   std::size_t next = 0, outstanding = 0;
   std::vector<int> held(static_cast<std::size_t>(mpi_.size()), 0);  // creatures at each worker
+  double breeding_seconds = 0;  // genomes made (bred) while handing out: not dispatch time
   auto hand = [&](int worker) {
     std::size_t index = order[next++];
+    auto breeding_start = Clock::now();
+    population.individuals[index].genome.bytes();
+    breeding_seconds += since(breeding_start);
     mpi_.post(worker, Tag::request,
               encodeRequest(makeRequest(population.individuals[index], run_seed)));
     outstanding_for[index] = 1;
@@ -227,7 +231,9 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
   }
   if (sort_later) {
     // the rest in the scheduling order (which breeds them), the creatures handed out left out
+    auto breeding_start = Clock::now();
     std::vector<std::size_t> rest = schedulingOrder(population, dispatch_, run_seed);
+    breeding_seconds += since(breeding_start);
     order.resize(next);
     for (std::size_t index : rest) {
       if (!outstanding_for[index])
@@ -312,6 +318,7 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
   mpi_.waitPosted();
   ownWorkDone(true);
   span.span_seconds = since(start);
+  span.dispatch_seconds = std::max(0.0, span.dispatch_seconds - breeding_seconds);
   if (span.evaluations > 0)
     last_mean_seconds_ = span.busy_seconds / static_cast<double>(span.evaluations);
   return span;

@@ -22,7 +22,8 @@ struct EvaluationSpan {
   int workers = 0;              ///< ranks that evaluated
   double span_seconds = 0;      ///< first request to last result, wall clock
   double busy_seconds = 0;      ///< sum of the evaluations' wall times
-  double dispatch_seconds = 0;  ///< rank 0 handing out and taking in (its waits left out)
+  double dispatch_seconds = 0;  ///< rank 0 handing out and taking in (its waits and the
+                                ///< breeding of genomes made as they are handed out left out)
 };
 
 /// The order in which a generation's pending individuals are handed out (run.dispatch_order).
