@@ -101,7 +101,7 @@ Individual Breeder::offspring(std::uint64_t g, std::uint64_t slot, Origin origin
         Rng rng(seed, RngPurpose::variation, g, slot);
         for (int attempt = 0;; ++attempt) {
           Genotype genome = encoding.tidy(make(rng, attempt));
-          if (!viable || attempt + 1 >= max_attempts || viable(genome))
+          if (acceptable(viable, max_attempts, genome, attempt))
             return genome;
         }
       });
@@ -226,6 +226,9 @@ Population Breeder::nextGeneration(const Population& evaluated) {
 
   // offspring slot i uses the stream (seed, variation, g, i)
   const int bred = plan_.mutations + plan_.crossovers + plan_.grafts;
+  const double mutation_rate = scaledMutationRate(encoding_, settings_.mutation_rate, 1);
+  const double post_chance = settings_.post_crossover_mutation_chance;
+  const double post_rate = scaledMutationRate(encoding_, settings_.post_crossover_mutation_rate, 1);
   for (int i = 0; i < bred; ++i) {
     const Individual* a = &pickParent();
     const Individual* b = i < plan_.mutations ? nullptr : &pickParent();
@@ -234,10 +237,6 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     const Origin origin = i < plan_.mutations                      ? Origin::mutation
                           : i < plan_.mutations + plan_.crossovers ? Origin::crossover
                                                                    : Origin::graft;
-    const double mutation_rate = scaledMutationRate(encoding_, settings_.mutation_rate, 1);
-    const double post_chance = settings_.post_crossover_mutation_chance;
-    const double post_rate =
-        scaledMutationRate(encoding_, settings_.post_crossover_mutation_rate, 1);
     next.individuals.push_back(offspring(
         g, static_cast<std::uint64_t>(i), origin, std::move(parents),
         [&encoding = encoding_, origin, first = a->genome, second = b ? b->genome : Genotype{},

@@ -94,8 +94,13 @@ class Breeder {
   Individual offspring(std::uint64_t g, std::uint64_t slot, Origin origin,
                        std::vector<std::uint64_t> parents,
                        std::function<Genotype(Rng&, int attempt)> make);
+  // whether `genome`, drawn at `attempt`, is kept: it passes `viable`, or it is the last attempt
+  static bool acceptable(const ViabilityCheck& viable, int max_attempts, const Genotype& genome,
+                         int attempt) {
+    return !viable || attempt + 1 >= max_attempts || viable(genome);
+  }
   bool acceptable(const Genotype& genome, int attempt) const {
-    return !viable_ || attempt + 1 >= max_attempts_ || viable_(genome);
+    return acceptable(viable_, max_attempts_, genome, attempt);
   }
   EvolutionSettings settings_;
   const Encoding& encoding_;

@@ -85,6 +85,9 @@ class MpiContext {
 class Backoff {
  public:
   static constexpr long kMin = 50, kMax = 1000;
+  /// The longest sleep while a message is likely on its way (rank 0 waiting on a worker that
+  /// holds one creature, a worker waiting for its next).
+  static constexpr long kUrgent = 100;
   /// Sleeps for the current interval and grows it.
   void wait();
   /// The longest sleep for a wait that should end within a quarter of `seconds` (an expected

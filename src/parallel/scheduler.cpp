@@ -94,7 +94,7 @@ std::vector<std::size_t> schedulingOrder(const Population& population,
   }
 
   // short creatures: id order, each genome made only when it is handed out
-  if (expected_seconds > 0 && expected_seconds < DispatchPace::kShortSeconds)
+  if (DispatchPace::isShort(expected_seconds))
     return order;
 
   // by genome size (the encoding's genes + links), largest or smallest first, ties by id
@@ -152,7 +152,7 @@ int DispatchPace::held(double mean_seconds, std::size_t remaining, int workers) 
   // creatures keep one queued to the end (a worker holding one waits a round trip to rank 0 for
   // each, longer than the imbalance a queued short creature can cause)
   std::size_t share = 1 + remaining / (kRemainingPerExtra * static_cast<std::size_t>(workers));
-  if (mean_seconds > 0 && mean_seconds < kShortSeconds)
+  if (isShort(mean_seconds))
     share = std::max(share, static_cast<std::size_t>(in_flight));
   return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(depth), share));
 }
@@ -183,10 +183,8 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
   // the hand-out order; where it is by size and genomes are still to be bred, the first rounds go
   // in id order (bred one by one as they go out) and the rest are bred and sorted while those
   // evaluate
-  const bool sort_later =
-      dispatch_.order != DispatchOrder::shuffled &&
-      !(last_mean_seconds_ > 0 && last_mean_seconds_ < DispatchPace::kShortSeconds) &&
-      anyToBeMade(population);
+  const bool sort_later = dispatch_.order != DispatchOrder::shuffled &&
+                          !DispatchPace::isShort(last_mean_seconds_) && anyToBeMade(population);
   std::vector<std::size_t> order =
       sort_later ? pendingInIdOrder(population)
                  : schedulingOrder(population, dispatch_, run_seed, last_mean_seconds_);
@@ -271,8 +269,7 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
       if (relaxed > 0)
         backoff.range(relaxed, relaxed);
       else
-        backoff.range(Backoff::kMin,
-                      std::min(Backoff::quarterOf(mean()), DispatchPace::kUrgentMicros));
+        backoff.range(Backoff::kMin, std::min(Backoff::quarterOf(mean()), Backoff::kUrgent));
       backoff.wait();
       continue;
     }

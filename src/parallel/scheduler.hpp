@@ -111,8 +111,13 @@ class InProcessEvaluator : public PopulationEvaluator {
 struct DispatchPace {
   /// Work a worker holds queued beyond the creature it evaluates, seconds.
   static constexpr double kQueuedSeconds = 0.004;
-  /// Creatures shorter than this are held in_flight deep to the end of a generation.
+  /// Creatures shorter than this are held in_flight deep to the end of a generation, handed out
+  /// in id order and bred as they go out.
   static constexpr double kShortSeconds = 2 * kQueuedSeconds;
+  /// Whether evaluations of `mean_seconds` (0: not known) are short.
+  static bool isShort(double mean_seconds) {
+    return mean_seconds > 0 && mean_seconds < kShortSeconds;
+  }
   /// Most creatures a worker holds at once.
   static constexpr int kMaxHeld = 64;
   /// Creatures per worker that must remain unhanded for a worker to hold one more.
@@ -120,8 +125,7 @@ struct DispatchPace {
   /// Rank 0's sleep while every worker has work queued: a quarter of that work, within these.
   static constexpr long kMinRelaxedMicros = 50, kMaxRelaxedMicros = 20000;
   /// Rank 0's longest sleep otherwise (a worker may be waiting): a quarter of an evaluation, at
-  /// most this.
-  static constexpr long kUrgentMicros = 100;
+  /// most Backoff::kUrgent.
 
   /// Creatures each worker holds at least (the one it evaluates and the next).
   int in_flight = 2;
@@ -131,7 +135,7 @@ struct DispatchPace {
   int held(double mean_seconds, std::size_t remaining, int workers) const;
   /// Rank 0's sleep between looks while workers hold `held` creatures each of `mean_seconds`;
   /// 0 when a worker holds only the creature it evaluates (then rank 0 answers within a quarter
-  /// of an evaluation, Backoff::quarterOf, and at most kUrgentMicros).
+  /// of an evaluation, Backoff::quarterOf, and at most Backoff::kUrgent).
   long relaxedMicros(double mean_seconds, int held) const;
 };
 

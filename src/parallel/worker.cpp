@@ -71,11 +71,6 @@ EvalResult serveRequest(const Message& message, const WorkerSettings& settings, 
   return evaluateRequest(request, settings, rank, log);
 }
 
-namespace {
-// a waiting worker's longest sleep while its next creature is likely on its way
-constexpr long kWorkerUrgentMicros = 100;
-}  // namespace
-
 void runWorker(MpiContext& mpi, const WorkerSettings& settings) {
   // serve requests until told to stop; waiting for the next, look again within 100 us for the
   // first 20 ms (rank 0 answers a result at once), then within a quarter of an evaluation
@@ -83,7 +78,7 @@ void runWorker(MpiContext& mpi, const WorkerSettings& settings) {
   std::uint64_t served = 0;
   for (;;) {
     double mean = served > 0 ? busy_seconds / static_cast<double>(served) : 0;
-    Message message = mpi.receiveAny(0, Backoff::quarterOf(mean), kWorkerUrgentMicros);
+    Message message = mpi.receiveAny(0, Backoff::quarterOf(mean), Backoff::kUrgent);
     if (message.tag == Tag::stop)
       return;
     EvalResult result = serveRequest(message, settings, mpi.rank(), std::cerr);
