@@ -320,9 +320,12 @@ class EvolutionRun {
   // the pending generation's history rows, its checkpoint when one is due, its times completed
   void writePending(GenerationRecord& record, bool final_write) {
     std::uint64_t g = record.generation;
+    auto warnOfRepairs = [&] {
+      if (std::string notice = history_->takeNotice(); !notice.empty())
+        out_ << "cambrian evolve: warning: " << notice << std::endl;
+    };
     history_->appendGeneration(last_->individuals, record);
-    if (std::string notice = history_->takeNotice(); !notice.empty())
-      out_ << "cambrian evolve: warning: " << notice << std::endl;
+    warnOfRepairs();
     testKillPoint("history", g);
 
     // a checkpoint every checkpoint_every generations or checkpoint_minutes, after the first
@@ -337,6 +340,7 @@ class EvolutionRun {
     if (final_write)
       closeTimes(record);
     history_->completeLastGeneration(record);
+    warnOfRepairs();
   }
 
   // why the run should stop before generation g ("" to go on)

@@ -329,6 +329,17 @@ struct HistoryWriter::Impl {
              "), and the run goes on";
   }
 
+  // the file at `path` opened for writing, written back first where it was deleted; looked at
+  // again where the opening fails (deleted between the look and the opening: the writer runs
+  // beside the evaluations, so anyone may remove the file at any moment)
+  bool openAtPath(const std::string& path) {
+    stayAtPath(path, generations_written);
+    if (openFile(path))
+      return true;
+    stayAtPath(path, generations_written);
+    return openFile(path);
+  }
+
   int held = -1;  // the file, kept open across generations to notice and undo a deletion
   ~Impl() {
     if (held >= 0)
@@ -499,8 +510,7 @@ void HistoryWriter::appendGeneration(const std::vector<Individual>& rows,
   }
 
   QuietErrors quiet;
-  m.stayAtPath(path_, m.generations_written);
-  if (!m.openFile(path_))
+  if (!m.openAtPath(path_))
     throw Error(ExitCode::output_file, path_ + ": cannot open the history file to append to it");
   bool ok = true;
   auto append = [&](std::unordered_map<std::string, Handle>& datasets, const char* name,
@@ -582,7 +592,7 @@ void HistoryWriter::completeLastGeneration(const GenerationRecord& record) {
   if (!impl_)
     throw Error(ExitCode::output_file, path_ + ": history file is closed");
   QuietErrors quiet;
-  if (!impl_->openFile(path_))
+  if (!impl_->openAtPath(path_))
     throw Error(ExitCode::output_file, path_ + ": cannot open the history file to complete it");
 
   // the last row of each column, rewritten in place (SWMR allows changing existing data)

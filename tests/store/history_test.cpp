@@ -509,6 +509,32 @@ TEST(History, SurvivesAWriterKilledMidRun) {
   EXPECT_EQ(bytesOf(reader, 202), makeRows(2, 5)[2].genomeBytes());
 }
 
+// the writer works beside the evaluations, so the file may go at any moment: between an
+// append and the completion of its row, or between the writer's look and its opening
+TEST(History, AFileDeletedBetweenAppendAndCompletionIsWrittenBackWhole) {
+  std::string path = tempPath("deleted_mid_generation.h5");
+  {
+    HistoryWriter writer(path, makeAttributes(), kMeasures);
+    writer.appendGeneration(makeRows(0, 5), makeGeneration(0));
+    writer.completeLastGeneration(makeGeneration(0));
+    writer.appendGeneration(makeRows(1, 5), makeGeneration(1));
+    std::filesystem::remove(path);
+    GenerationRecord completed = makeGeneration(1);
+    completed.wall_seconds = 7.25;
+    writer.completeLastGeneration(completed);
+    EXPECT_NE(writer.takeNotice().find("deleted while this run was writing it; written back"),
+              std::string::npos);
+    writer.appendGeneration(makeRows(2, 5), makeGeneration(2));
+    EXPECT_EQ(writer.takeNotice(), "");
+    writer.close();
+  }
+  HistoryReader reader(path);
+  std::vector<GenerationRecord> generations = reader.generations();
+  ASSERT_EQ(generations.size(), 3u);
+  EXPECT_EQ(generations[1].wall_seconds, 7.25);
+  EXPECT_EQ(reader.individuals().size(), 15u);
+}
+
 TEST(History, MissingFileIsAnInputErrorNamingIt) {
   std::string path = tempPath("missing.h5");
   std::string message = openError(path);
