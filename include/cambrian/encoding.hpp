@@ -63,6 +63,9 @@ class Genotype {
   }
   /// The byte form (tag, version, fields), made on first use.
   const std::vector<std::uint8_t>& bytes() const;
+  /// Lets go of the decoded genome where the byte form is made; data() decodes it again when
+  /// next read. Rank 0 keeps the creatures it has sent in their byte form alone.
+  void dropDecoded() const;
   /// Whether two genotypes have the same byte form.
   friend bool operator==(const Genotype& a, const Genotype& b);
 

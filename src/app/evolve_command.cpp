@@ -6,6 +6,7 @@
 #include "cambrian/evaluate.hpp"
 
 #include "commands.hpp"
+#include "core/process_usage.hpp"
 #include "evolution/competitive_ranking.hpp"
 #include "evolution/epochs.hpp"
 #include "evolution/evolution_settings.hpp"
@@ -293,6 +294,8 @@ int runEvolve(int argc, char** argv) {
   try {
     if (!root) {
       runWorker(mpi, worker);
+      // the workers' peak memory for rank 0's summary
+      mpi.allReduceMax(processPeakResidentBytes());
       return 0;
     }
     // rank 0: schedule over the workers, or evaluate in process with one rank
@@ -328,13 +331,20 @@ int runEvolve(int argc, char** argv) {
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     RunResult result =
         runEvolution(s.evolution, creature.encoding(), setup.seeds, *evaluator, run, std::cout);
-    if (scheduler)
+    // rank 0's and the largest worker's peak memory (one process when evaluating in process)
+    std::uint64_t rank0_peak = processPeakResidentBytes();
+    std::uint64_t worker_peak = rank0_peak;
+    if (scheduler) {
       scheduler->stopWorkers();
+      worker_peak = mpi.allReduceMax(std::uint64_t{0});
+    }
 
     // the run digest (so far, when stopped) and rank 0's cost
     std::cout << (result.stopped ? "digest_so_far " : "digest ") << result.digest << "\n"
               << "rank0_cpu_seconds " << result.rank0_cpu_seconds << "\n"
               << "wall_seconds " << result.wall_seconds << "\n"
+              << "rank0_peak_rss_mb " << rank0_peak / 1e6 << "\n"
+              << "worker_peak_rss_mb " << worker_peak / 1e6 << "\n"
               << "history " << s.run.out_dir << "/history.h5\n"
               << "tables " << s.run.out_dir << "/individuals.tsv " << s.run.out_dir
               << "/generations.tsv" << std::endl;

@@ -59,6 +59,9 @@ const Encoding& Genotype::encoding() const {
 const GenomeData& Genotype::data() const {
   if (state_ && state_->recipe)
     make();
+  if (state_ && !state_->data && !state_->bytes.empty())
+    state_->data =
+        state_->encoding->fromBytes(state_->bytes.data(), state_->bytes.size()).state_->data;
   if (!state_ || !state_->data)
     throw Error(ExitCode::failure, "genotype: empty (no genome)");
   return *state_->data;
@@ -67,9 +70,16 @@ const GenomeData& Genotype::data() const {
 const std::vector<std::uint8_t>& Genotype::bytes() const {
   if (state_->recipe)
     make();
-  if (state_->bytes.empty())
+  if (state_->bytes.empty()) {
     state_->bytes = encoding().toBytes(data());
+    state_->bytes.shrink_to_fit();  // kept for the genome's life: no growth slack
+  }
   return state_->bytes;
+}
+
+void Genotype::dropDecoded() const {
+  if (state_ && !state_->recipe && !state_->bytes.empty())
+    state_->data.reset();
 }
 
 bool operator==(const Genotype& a, const Genotype& b) {

@@ -190,6 +190,13 @@ int MpiContext::allReduceMax(int value) {
   return result;
 }
 
+std::uint64_t MpiContext::allReduceMax(std::uint64_t value) {
+  std::uint64_t result = value;
+  check(MPI_Allreduce(&value, &result, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce",
+        rank_);
+  return result;
+}
+
 void MpiContext::abort(ExitCode code, const std::string& message) const {
   // one write, so that mpirun's own abort notice cannot land inside the line
   std::cerr << ("cambrian evolve: rank " + std::to_string(rank_) + ": " + message + "\n")

@@ -67,6 +67,8 @@ class MpiContext {
   Message receive(Tag tag);
   /// The maximum of `value` over all ranks (collective).
   int allReduceMax(int value);
+  /// The maximum of `value` over all ranks (collective).
+  std::uint64_t allReduceMax(std::uint64_t value);
 
   /// Prints "cambrian evolve: rank R: message" to stderr and calls MPI_Abort with `code`, which
   /// ends every rank of the job with that exit code. Never returns.

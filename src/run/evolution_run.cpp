@@ -5,7 +5,7 @@
 #include "cambrian/error.hpp"
 #include "cambrian/version.hpp"
 
-#include "core/cpu_time.hpp"
+#include "core/process_usage.hpp"
 #include "core/test_kill.hpp"
 #include "evolution/breeder.hpp"
 #include "evolution/competitive_ranking.hpp"

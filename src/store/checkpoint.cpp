@@ -33,15 +33,26 @@ using namespace hdf5;
 
 namespace {
 
+// the genomes' byte forms one after another, as a column to write: never gathered into one
+// string (at 100,000 graph genomes that would be half a gigabyte more)
+struct ByteParts {
+  std::vector<const std::vector<std::uint8_t>*> parts;
+  std::uint64_t size = 0;  // bytes in all parts
+};
+
 // the columns of /population (version 2): one row per individual, genomes and outcomes in
-// their byte forms
-struct Columns {
+// their byte forms; the genome bytes a ByteParts when written, one string when read
+template <class GenomeBytes>
+struct ColumnsOf {
   std::vector<std::uint64_t> id, generation, parent_a, parent_b, genome_offset, genome_size,
       outcome_offset, outcome_size;
-  std::vector<std::uint8_t> origin, evaluated, genome_bytes, outcome_bytes;
+  std::vector<std::uint8_t> origin, evaluated, outcome_bytes;
+  GenomeBytes genome_bytes;
   std::vector<double> eval_seconds;
   std::vector<std::int32_t> worker_rank;
 };
+using Columns = ColumnsOf<std::vector<std::uint8_t>>;
+using ColumnsToWrite = ColumnsOf<ByteParts>;
 
 // calls visit(name, column) for every column, in the fixed order the state hash uses
 template <class C, class Visit>
@@ -99,6 +110,19 @@ void forEachColumnV1(C& c, Visit visit) {
   visit("measure_values", c.measure_values);
 }
 
+// a column into the state hash: its length, then its values' bytes
+template <class T>
+void hashColumn(Fnv1a& hash, const std::vector<T>& values) {
+  std::uint64_t n = values.size();
+  hash.add(&n, sizeof n);
+  hash.add(values.data(), values.size() * sizeof(values[0]));
+}
+void hashColumn(Fnv1a& hash, const ByteParts& bytes) {
+  hash.add(&bytes.size, sizeof bytes.size);
+  for (const std::vector<std::uint8_t>* part : bytes.parts)
+    hash.add(part->data(), part->size());
+}
+
 // the hash of the scalar state and every column (detects corruption the HDF5 layer misses)
 template <class C, class ForEach>
 std::uint64_t stateHash(const CheckpointState& s, const C& columns, ForEach forEach) {
@@ -108,11 +132,7 @@ std::uint64_t stateHash(const CheckpointState& s, const C& columns, ForEach forE
        {s.seed, s.next_generation, s.next_id, s.digest, s.population.generation}) {
     hash.add(&v, sizeof v);
   }
-  forEach(columns, [&](const char*, const auto& values) {
-    std::uint64_t n = values.size();
-    hash.add(&n, sizeof n);
-    hash.add(values.data(), values.size() * sizeof(values[0]));
-  });
+  forEach(columns, [&](const char*, const auto& values) { hashColumn(hash, values); });
   return hash.value();
 }
 
@@ -125,8 +145,8 @@ void appendBytes(std::vector<std::uint8_t>& stream, const std::vector<std::uint8
 }
 
 // the population as columns
-Columns toColumns(const Population& population) {
-  Columns c;
+ColumnsToWrite toColumns(const Population& population) {
+  ColumnsToWrite c;
   std::vector<std::uint8_t> outcome;
   for (const Individual& i : population.individuals) {
     c.id.push_back(i.id);
@@ -137,7 +157,11 @@ Columns toColumns(const Population& population) {
     c.evaluated.push_back(i.evaluated ? 1 : 0);
     c.eval_seconds.push_back(i.eval_seconds);
     c.worker_rank.push_back(i.worker_rank);
-    appendBytes(c.genome_bytes, i.genomeBytes(), c.genome_offset, c.genome_size);
+    const std::vector<std::uint8_t>& genome = i.genomeBytes();
+    c.genome_offset.push_back(c.genome_bytes.size);
+    c.genome_size.push_back(genome.size());
+    c.genome_bytes.parts.push_back(&genome);
+    c.genome_bytes.size += genome.size();
     outcome.clear();
     ByteWriter writer(outcome);
     writeOutcome(writer, i.outcome);
@@ -266,6 +290,41 @@ bool writeColumn(hid_t group, const char* name, const std::vector<T>& values) {
       .valid();
 }
 
+// the genome byte stream as one 1-D dataset like writeColumn's, written a few megabytes (whole
+// chunks) at a time
+bool writeColumn(hid_t group, const char* name, const ByteParts& bytes) {
+  constexpr hsize_t kChunk = 65536, kBlock = 128 * kChunk;
+  Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  if (bytes.size > 0) {
+    hsize_t chunk = std::min<hsize_t>(bytes.size, kChunk);
+    H5Pset_chunk(properties.get(), 1, &chunk);
+    H5Pset_fletcher32(properties.get());
+  }
+  Handle dataset =
+      writeDataset(group, name, {bytes.size}, H5T_NATIVE_UINT8, nullptr, properties.get());
+  if (!dataset.valid())
+    return false;
+  std::vector<std::uint8_t> block;
+  block.reserve(kBlock);
+  hsize_t written = 0;
+  auto flush = [&] {
+    bool ok = writeRows(dataset.get(), H5T_NATIVE_UINT8, block.data(), written, block.size(), 1);
+    written += block.size();
+    block.clear();
+    return ok;
+  };
+  for (const std::vector<std::uint8_t>* part : bytes.parts) {
+    for (std::size_t from = 0; from < part->size();) {
+      std::size_t take = std::min<std::size_t>(part->size() - from, kBlock - block.size());
+      block.insert(block.end(), part->begin() + from, part->begin() + from + take);
+      from += take;
+      if (block.size() == kBlock && !flush())
+        return false;
+    }
+  }
+  return block.empty() || flush();
+}
+
 // a whole 1-D dataset; false when missing, of another shape or unreadable (checksum errors)
 template <class T>
 bool readColumn(hid_t group, const char* name, std::vector<T>& values) {
@@ -295,7 +354,7 @@ void writeFile(const std::string& path, const CheckpointState& state,
   Handle file = createFile(path, H5F_LIBVER_V110);
   if (!file.valid())
     fail("cannot create HDF5 file");
-  Columns columns = toColumns(state.population);
+  ColumnsToWrite columns = toColumns(state.population);
 
   // the root attributes: format, provenance, counters, state hash
   hid_t f = file.get();

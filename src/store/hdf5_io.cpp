@@ -251,9 +251,24 @@ Handle writeDataset(hid_t location, const char* name, const std::vector<hsize_t>
   hsize_t count = 1;
   for (hsize_t d : dims)
     count *= d;
-  if (count > 0 && H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0)
+  if (count > 0 && values &&
+      H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0)
     return Handle();
   return dataset;
+}
+
+bool writeRows(hid_t dataset, hid_t memory_type, const void* data, hsize_t start, hsize_t rows,
+               hsize_t width) {
+  Handle file_space(H5Dget_space(dataset), H5Sclose);
+  int rank = H5Sget_simple_extent_ndims(file_space.get());
+  hsize_t offset[2] = {start, 0};
+  hsize_t count[2] = {rows, width};
+  if (rank < 1 || rank > 2 ||
+      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr) < 0)
+    return false;
+  Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
+  return H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data) >=
+         0;
 }
 
 Handle openDataset(hid_t location, const char* name, int max_rank, std::vector<hsize_t>& dims) {

@@ -144,10 +144,15 @@ std::string checkFormat(hid_t file, const char* kind, const char* format, std::i
                         std::int32_t& version);
 
 /// Creates a fixed-size dataset of shape `dims` (`type` in the file and in memory) with the
-/// creation properties `properties` and writes `values` (row-major) into it; an invalid handle
-/// on failure.
+/// creation properties `properties` and writes `values` (row-major) into it (nothing where
+/// `values` is null: the caller writes the rows); an invalid handle on failure.
 Handle writeDataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, hid_t type,
                     const void* values, hid_t properties = H5P_DEFAULT);
+
+/// Writes `rows` rows of `width` values (a 1-D dataset: width 1) into `dataset` from row `start`
+/// on; false on failure.
+bool writeRows(hid_t dataset, hid_t memory_type, const void* data, hsize_t start, hsize_t rows,
+               hsize_t width);
 
 /// Opens the dataset `name` below `location` and reads its shape into `dims`; an invalid handle
 /// when it is missing, cannot be opened or its rank is not 1 to `max_rank`.

@@ -36,6 +36,8 @@ namespace {
 
 // rows per chunk of the per-row datasets; bytes per chunk of the genome byte stream
 constexpr hsize_t kRowChunk = 1024;
+// the most genome bytes gathered for one write of the byte stream
+constexpr std::size_t kGenomeBytesPerWrite = 8 << 20;
 // rows per chunk of /generations (one row per append: small, so little is deflated again)
 constexpr hsize_t kGenerationChunk = 64;
 constexpr hsize_t kByteChunk = 65536;
@@ -162,21 +164,6 @@ Handle createTable(hid_t group, const char* name, hid_t type, hsize_t width, hsi
       H5Dclose);
 }
 
-// writes `rows` rows of `width` values into a dataset from row `start` on; false on failure
-bool writeRows(hid_t dataset, hid_t memory_type, const void* data, hsize_t start, hsize_t rows,
-               hsize_t width) {
-  Handle file_space(H5Dget_space(dataset), H5Sclose);
-  int rank = H5Sget_simple_extent_ndims(file_space.get());
-  hsize_t offset[2] = {start, 0};
-  hsize_t count[2] = {rows, width};
-  if (rank < 1 || rank > 2 ||
-      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr) < 0)
-    return false;
-  Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
-  return H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data) >=
-         0;
-}
-
 // appends `rows` rows of `width` values to a dataset; false on failure
 bool appendRows(hid_t dataset, hid_t memory_type, const void* data, hsize_t rows, hsize_t width) {
   Handle space(H5Dget_space(dataset), H5Sclose);
@@ -286,8 +273,8 @@ struct HistoryWriter::Impl {
   Handle genome_bytes;
   std::vector<std::string> measure_names;  // the measure columns, in order
   std::uint64_t genome_end = 0;            // bytes in genome_bytes so far
-  std::vector<std::uint8_t> byte_buffer;   // a generation's genomes, concatenated (kept: no
-                                           // fresh megabyte to fault in every generation)
+  std::vector<std::uint8_t> byte_buffer;   // genomes on their way to the file (kept: no
+                                           // fresh megabytes to fault in every generation)
 
   // the datasets, then the file: afterwards the file on disk is closed and consistent
   bool closeFile() {
@@ -525,23 +512,27 @@ void HistoryWriter::appendGeneration(const std::vector<Individual>& rows,
   using u8 = std::uint8_t;
   using R = Individual;
 
-  // genome bytes first: rows never point past the stream
+  // genome bytes first (rows never point past the stream), a few megabytes at a time: a
+  // generation's genomes are never held twice
   std::vector<u8>& bytes = m.byte_buffer;
-  std::size_t total = 0;
-  for (const R& row : rows)
-    total += row.genomeBytes().size();
-  bytes.clear();
-  bytes.reserve(total);
   std::vector<u64> offsets, sizes;
+  auto flushBytes = [&] {
+    if (ok && !bytes.empty())
+      ok = appendRows(m.genome_bytes.get(), H5T_NATIVE_UINT8, bytes.data(), bytes.size(), 1);
+    if (ok)
+      m.genome_end += bytes.size();
+    bytes.clear();
+  };
+  bytes.reserve(kGenomeBytesPerWrite);
   for (const R& row : rows) {
     const std::vector<u8>& genome = row.genomeBytes();
+    if (bytes.size() + genome.size() > kGenomeBytesPerWrite)
+      flushBytes();
     offsets.push_back(m.genome_end + bytes.size());
     sizes.push_back(genome.size());
     bytes.insert(bytes.end(), genome.begin(), genome.end());
   }
-  ok = appendRows(m.genome_bytes.get(), H5T_NATIVE_UINT8, bytes.data(), bytes.size(), 1);
-  if (ok)
-    m.genome_end += bytes.size();
+  flushBytes();
 
   // the individual columns
   auto& d = m.individuals;

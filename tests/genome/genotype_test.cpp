@@ -54,6 +54,23 @@ TEST(Genotype, ADeferredGenomeIsMadeOnceWhenFirstReadAndSharedByItsCopies) {
   EXPECT_TRUE(deferred == graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 2, 0, 1)));
 }
 
+// a genome sent for evaluation is kept in its byte form alone and decoded again, the same, when
+// next read (rank 0's memory for large populations)
+TEST(Genotype, ADroppedDecodedGenomeIsDecodedAgainTheSame) {
+  Genotype genome = graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 3, 0, 2));
+  genome.dropDecoded();  // no byte form yet: the decoded genome stays (else data() would throw)
+  const GenomeData* before = &genome.data();
+  EXPECT_EQ(&genome.data(), before);
+  const std::vector<std::uint8_t> bytes = genome.bytes();
+  const graph::Genome decoded = genome.as<graph::GraphGenomeData>().genome;
+  Genotype copy = genome;
+  genome.dropDecoded();
+  EXPECT_EQ(genome.bytes(), bytes);
+  EXPECT_EQ(copy.as<graph::GraphGenomeData>().genome, decoded);  // the same genome
+  EXPECT_EQ(&copy.data(), &genome.data());                       // copies share the decoding
+  EXPECT_EQ(genome.encoding().toBytes(genome.data()), bytes);
+}
+
 // a recipe that makes a genome of another encoding is an error, said when it is read
 TEST(Genotype, ADeferredGenomeOfAnotherEncodingIsRefused) {
   struct OtherEncoding : graph::DirectedGraphEncoding {
