@@ -6,12 +6,16 @@ The model (docs/scaling.md):
 - rank 0 holds E evaluations of cost c_1 >= c_2 >= ... (largest first, as MpiScheduler sends
   them) and W workers; it hands out one evaluation at a time, and each hand-out occupies rank 0
   for a time L (so hand-outs are serial on rank 0);
-- first every worker gets K evaluations (--in-flight, 2 as MpiScheduler: the one it evaluates
-  and the next, queued); then each result is answered with the next evaluation for that worker,
-  in the order the results arrive (self-scheduling). A worker starts its queued evaluation as
-  soon as it finishes one, so with K = 2 the hand-out time is hidden while L < c. In the tail of
-  the generation (fewer than 4 evaluations per worker left to hand out) a worker holds one, as
-  MpiScheduler does, so none waits behind a long evaluation while others idle;
+- every worker holds K evaluations, handed out round by round; each result is answered with
+  the next for that worker, in the order the results arrive (self-scheduling). A worker starts
+  its queued evaluation as soon as it finishes one, so the hand-out time is hidden while
+  L < (K - 1) c. K is MpiScheduler's (DispatchPace): enough to queue 4 ms of work,
+  1 + ceil(4 ms / mean cost), at least 2 and at most 64, and never more than 1 + (evaluations
+  left to hand out) / (4 W). So creatures of 4 ms or more are held two at a time and, in the
+  tail of the generation (fewer than 4 per worker left), one at a time, so none waits behind a
+  long evaluation while others idle; creatures under 8 ms keep two to the end and go out in
+  the order given (MpiScheduler's id order), longer ones largest first. --in-flight K fixes K
+  instead (with the same tail rule);
 - each evaluation occupies its worker for c + o, o a per-evaluation overhead outside the
   measured eval_seconds (receiving and decoding the request, sending the result);
 - the generation ends when the last evaluation is done (the barrier), and rank 0 then spends
@@ -66,8 +70,11 @@ PROGRAM = "scaling_model"
 LIMITS = ("work", "dispatch", "barrier", "serial")
 BARRIER_SLACK = 1.25  # zero-latency span / (total cost / W) above which the barrier is the bound
 MARKERS = {"work": "o", "dispatch": "s", "barrier": "^", "serial": "D"}
-IN_FLIGHT = 2  # evaluations MpiScheduler keeps at each worker (src/parallel/scheduler.hpp)
-QUEUE_WHILE_REMAINING = 4  # ... while at least this many per worker remain to be handed out
+IN_FLIGHT = 2  # evaluations MpiScheduler keeps at each worker at least (src/parallel/scheduler.hpp)
+QUEUE_WHILE_REMAINING = 4  # one more for every this many per worker left to hand out
+QUEUED_SECONDS = 0.004  # DispatchPace::kQueuedSeconds: work a worker holds queued
+SHORT_SECONDS = 2 * QUEUED_SECONDS  # DispatchPace::kShortSeconds
+MAX_HELD = 64  # DispatchPace::kMaxHeld
 
 
 def parse_arguments(argv):
@@ -90,8 +97,8 @@ def parse_arguments(argv):
     parser.add_argument("--latency", type=float, default=None, help="seconds of rank 0 per hand-out")
     parser.add_argument("--overhead", type=float, default=None,
                         help="seconds of worker time per evaluation outside eval_seconds")
-    parser.add_argument("--in-flight", type=int, default=IN_FLIGHT,
-                        help=f"evaluations each worker holds at once (default {IN_FLIGHT}, as MpiScheduler)")
+    parser.add_argument("--in-flight", type=int, default=None,
+                        help="evaluations each worker holds at once (default: as MpiScheduler, from the mean cost)")
     parser.add_argument("--evaluated-share", type=float, default=None,
                         help="share of the population evaluated per generation (default: from the history, else 0.8)")
     parser.add_argument("--populations", type=int, nargs="+", default=[100, 300, 1000], help="populations to project (default 100 300 1000)")
@@ -109,39 +116,55 @@ def parse_arguments(argv):
         value = getattr(arguments, name)
         if value is not None and value < 0:
             parser.error(f"--{name.replace('_', '-')} must be >= 0")
-    if arguments.max_workers < 1 or arguments.samples < 1 or arguments.cost_cv < 0 or arguments.in_flight < 1:
+    if arguments.max_workers < 1 or arguments.samples < 1 or arguments.cost_cv < 0 or (arguments.in_flight is not None and arguments.in_flight < 1):
         parser.error("--max-workers, --samples and --in-flight must be >= 1, --cost-cv >= 0")
     return arguments
 
 
-def simulate_span(costs, workers, latency, in_flight=IN_FLIGHT, overhead=0.0):
-    """Evaluation span of one generation: costs handed out largest first, one at a time, each
-    hand-out taking `latency` of rank 0; every worker first gets `in_flight` evaluations, then
-    each result is answered with the next, and in the tail (fewer than QUEUE_WHILE_REMAINING
-    evaluations per worker left) a worker holds only one; an evaluation occupies its worker for
-    cost + overhead."""
-    order = np.sort(np.asarray(costs, dtype=float))[::-1]
+def held(mean, remaining, workers, in_flight=None):
+    """Evaluations a worker holds when they cost `mean` on average and `remaining` are left to
+    hand out (MpiScheduler's DispatchPace::held); `in_flight` fixes the depth instead."""
+    share = 1 + remaining // (QUEUE_WHILE_REMAINING * workers)
+    if in_flight is not None:
+        return in_flight if share > 1 else 1
+    depth = IN_FLIGHT
+    if mean > 0:
+        depth = max(min(1 + int(np.ceil(QUEUED_SECONDS / mean)), MAX_HELD), IN_FLIGHT)
+    if 0 < mean < SHORT_SECONDS:
+        share = max(share, IN_FLIGHT)
+    return min(depth, share)
+
+
+def simulate_span(costs, workers, latency, in_flight=None, overhead=0.0):
+    """Evaluation span of one generation: costs handed out one at a time (largest first, short
+    ones in the order given), each hand-out taking `latency` of rank 0; every worker holds
+    held(...) evaluations, handed out round by round, then each result is answered with the
+    next; an evaluation occupies its worker for cost + overhead."""
+    order = np.asarray(costs, dtype=float)
     if len(order) == 0:
         return 0.0
+    mean = float(np.mean(order))
+    if not 0 < mean < SHORT_SECONDS:
+        order = np.sort(order)[::-1]
     rank0_free = 0.0
     queues = [deque() for _ in range(workers)]  # (arrival time, cost) handed to each worker
-    held = [0] * workers  # evaluations at each worker, running or queued
+    holding = [0] * workers  # evaluations at each worker, running or queued
     handed = 0
 
     def depth():
-        return in_flight if len(order) - handed >= QUEUE_WHILE_REMAINING * workers else 1
+        return held(mean, len(order) - handed, workers, in_flight)
 
     def hand(worker, ready):
         nonlocal rank0_free, handed
         rank0_free = max(rank0_free, ready) + latency
         queues[worker].append((rank0_free, order[handed]))
         handed += 1
-        held[worker] += 1
+        holding[worker] += 1
 
     # round by round: every worker has its first evaluation before any gets a second
-    for round_ in range(1, in_flight + 1):
+    for round_ in range(1, depth() + 1):
         for worker in range(workers):
-            if handed < len(order) and held[worker] < min(round_, depth()):
+            if handed < len(order) and holding[worker] < min(round_, depth()):
                 hand(worker, 0.0)
     # each worker starts its first; every finish is answered, in finishing order
     finishes = []
@@ -153,8 +176,8 @@ def simulate_span(costs, workers, latency, in_flight=IN_FLIGHT, overhead=0.0):
     while finishes:
         done, worker = heapq.heappop(finishes)
         span = max(span, done)
-        held[worker] -= 1
-        while handed < len(order) and held[worker] < depth():
+        holding[worker] -= 1
+        while handed < len(order) and holding[worker] < depth():
             hand(worker, done)
         if queues[worker]:
             arrival, cost = queues[worker].popleft()
@@ -162,7 +185,7 @@ def simulate_span(costs, workers, latency, in_flight=IN_FLIGHT, overhead=0.0):
     return span
 
 
-def generation_time(costs, workers, latency, serial, in_flight=IN_FLIGHT, overhead=0.0):
+def generation_time(costs, workers, latency, serial, in_flight=None, overhead=0.0):
     """T(W) = rank 0 serial time + evaluation span."""
     return serial + simulate_span(costs, workers, latency, in_flight, overhead)
 
@@ -182,7 +205,7 @@ class Calibration:
     """Per-evaluation costs (a sampler), serial seconds, latency and evaluated share."""
 
     def __init__(self, costs=None, cost_mean=None, cost_cv=0.0, serial=0.0, latency=0.0, evaluated_share=0.8,
-                 source="parameters", overhead=0.0, in_flight=IN_FLIGHT):
+                 source="parameters", overhead=0.0, in_flight=None):
         self.costs = None if costs is None else np.asarray(costs, dtype=float)
         self.cost_mean, self.cost_cv = cost_mean, cost_cv
         self.serial, self.latency, self.evaluated_share, self.source = serial, latency, evaluated_share, source
@@ -209,7 +232,7 @@ class Calibration:
         mean = self.cost_mean if self.cost_mean is not None else float(np.mean(self.costs))
         return (f"calibration ({self.source}): mean cost {mean:.6g} s, rank 0 serial {self.serial:.6g} s, "
                 f"latency {self.latency:.6g} s per hand-out, overhead {self.overhead:.6g} s per evaluation, "
-                f"{self.in_flight} in flight, evaluated share {self.evaluated_share:.3f}")
+                f"{'as MpiScheduler' if self.in_flight is None else self.in_flight} in flight, evaluated share {self.evaluated_share:.3f}")
 
 
 def calibrate(path, skip=1):

@@ -80,7 +80,7 @@ def test_projection_with_overhead_is_sub_linear():
 def test_calibration_from_history(run_history):
     calibration = sm.calibrate(run_history)
     assert len(calibration.costs) > 0 and np.all(calibration.costs >= 0)
-    assert calibration.latency >= 0 and calibration.overhead >= 0 and calibration.in_flight == sm.IN_FLIGHT
+    assert calibration.latency >= 0 and calibration.overhead >= 0 and calibration.in_flight is None
     assert calibration.serial >= 0 and calibration.latency >= 0
     assert 0 < calibration.evaluated_share <= 1
     draws = calibration.draw(100, np.random.default_rng(1))
@@ -133,3 +133,26 @@ def test_calibration_from_a_measured_mpi_run(sweep_dir):
     calibration = sm.calibrate(min(runs, key=lambda r: r["workers"])["path"])
     assert 0.0 < calibration.latency < 0.5 * float(np.mean(calibration.costs))
     assert calibration.overhead >= 0.0
+
+
+def test_the_depth_is_the_schedulers():
+    # DispatchPace::held: 4 ms of work queued, at least 2, at most 64, a share of what is left
+    assert sm.held(0.010, 1000, 2) == 2
+    assert sm.held(0.010, 7, 2) == 1  # the tail: one at a time
+    assert sm.held(0.001, 1000, 2) == 5
+    assert sm.held(0.0001, 10000, 2) == 41
+    assert sm.held(0.0001, 40, 2) == 6  # 1 + 40 / (4 x 2)
+    assert sm.held(0.0001, 3, 2) == 2  # short creatures keep two to the end
+    assert sm.held(0.0, 1000, 2) == 2  # no mean yet
+    assert sm.held(0.0001, 10000, 2, in_flight=3) == 3  # fixed
+
+
+def test_deep_queues_hide_the_hand_outs_of_short_creatures():
+    # 100 us creatures, 30 us per hand-out, 2 workers: rank 0 keeps up (60 us of hand-outs per
+    # 100 us of work), and a worker never waits for its next one behind the other's hand-out
+    costs = np.full(400, 1e-4)
+    span = sm.simulate_span(costs, 2, 3e-5)
+    work = costs.sum() / 2
+    assert span == pytest.approx(work, rel=0.02)
+    # held two at a time in the tail too: no round trip per creature at the end
+    assert sm.simulate_span(costs, 2, 3e-5) <= sm.simulate_span(costs, 2, 3e-5, in_flight=2)
