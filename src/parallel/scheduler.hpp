@@ -124,9 +124,6 @@ struct DispatchPace {
   static constexpr std::size_t kRemainingPerExtra = 4;
   /// Rank 0's sleep while every worker has work queued: a quarter of that work, within these.
   static constexpr long kMinRelaxedMicros = 50, kMaxRelaxedMicros = 20000;
-  /// Rank 0's longest sleep otherwise (a worker may be waiting): a quarter of an evaluation, at
-  /// most Backoff::kUrgent.
-
   /// Creatures each worker holds at least (the one it evaluates and the next).
   int in_flight = 2;
 
