@@ -1,0 +1,60 @@
+// cambrian: the island model's rules that need no messages: where each island's emigrants go,
+// who they are, and how immigrants join a population. MPI carries them (parallel/).
+#pragma once
+
+#include "evolution/population.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cambrian {
+
+/// Which islands an island sends its emigrants to.
+enum class MigrationTopology : std::uint8_t {
+  ring,    ///< island i to island i + 1 (the last to the first)
+  full,    ///< every island to every other
+  random,  ///< each island to one other, drawn afresh at every migration from the run seed
+};
+
+/// "ring", "full", "random".
+const char* migrationTopologyName(MigrationTopology topology);
+/// The topology named `name`; throws std::invalid_argument naming the choices.
+MigrationTopology parseMigrationTopology(const std::string& name);
+
+/// The archipelago: how many islands and how they trade individuals.
+struct MigrationSettings {
+  int islands = 1;    ///< 1: no islands (one population, as without this setting)
+  int interval = 10;  ///< generations between migrations (after generation interval - 1, ...)
+  int migrants = 2;   ///< the best this many of an island's generation emigrate
+  MigrationTopology topology = MigrationTopology::ring;
+};
+
+/// Whether island emigrants leave after generation `generation` (every `interval`, from
+/// generation interval - 1 on; never with one island).
+bool migratesAfter(const MigrationSettings& settings, std::uint64_t generation);
+
+/// The islands island `island` sends to after generation `generation`, ascending; empty with
+/// one island. The random topology's draw is a pure function of (run seed, generation, island).
+std::vector<int> migrationTargets(const MigrationSettings& settings, int island,
+                                  std::uint64_t generation, std::uint64_t run_seed);
+/// The islands that send to island `island` after generation `generation`, ascending.
+std::vector<int> migrationSources(const MigrationSettings& settings, int island,
+                                  std::uint64_t generation, std::uint64_t run_seed);
+
+/// The run seed of island `island`: the run's own for island 0, else one drawn from it, so
+/// every island has random streams of its own and one island is the run without islands.
+std::uint64_t islandSeed(std::uint64_t run_seed, int island);
+
+/// Indices of the `count` best evaluated individuals of `population` (fitness descending, ties
+/// to the lower id), fewer when it holds fewer.
+std::vector<std::size_t> emigrants(const Population& population, int count);
+
+/// The population breeding draws from: `population` without its worst individuals (fitness
+/// ascending, ties to the higher id), as many as there are immigrants but never all of it, and
+/// the immigrants after the rest, in the order given. They must have ids above every id of
+/// `population` (the receiving island gives them its next ids), so ids stay increasing; they
+/// keep their outcomes. Throws std::invalid_argument otherwise.
+Population withImmigrants(const Population& population, const std::vector<Individual>& immigrants);
+
+}  // namespace cambrian
