@@ -29,6 +29,28 @@ MigrationTopology parseMigrationTopology(const std::string& name) {
   throw std::invalid_argument("'" + name + "' is not a migration topology (ring, full, random)");
 }
 
+void MigrationSettings::declareSettings(SettingsSchema& s) {
+  MigrationSettings& m = *this;
+  s.describeSection("islands",
+                    "[islands] the island model: populations of their own, trading "
+                    "their best");
+  s.add("islands.count", m.islands,
+        "islands, each with a breeding rank, workers and a population of evolution.population "
+        "of its own (the ranks split into as many blocks; 1: one population)")
+      .require([&m] { return m.islands >= 1 && m.islands <= 65536; }, "must be in 1..65536");
+  s.add("islands.interval", m.interval, "generations between migrations")
+      .require([&m] { return m.interval >= 1; }, "must be >= 1");
+  s.add("islands.migrants", m.migrants,
+        "the best this many of an island's generation go to each island it sends to (0: none)")
+      .require([&m] { return m.migrants >= 0; }, "must be >= 0");
+  s.addChoice("islands.topology", m.topology,
+              {{"ring", MigrationTopology::ring},
+               {"full", MigrationTopology::full},
+               {"random", MigrationTopology::random}},
+              "which islands each sends to: ring (the next) | full (every other) | random (one "
+              "other, drawn at every migration)");
+}
+
 bool migratesAfter(const MigrationSettings& settings, std::uint64_t generation) {
   if (settings.islands < 2 || settings.interval < 1 || settings.migrants < 1)
     return false;
@@ -89,32 +111,22 @@ std::vector<std::size_t> emigrants(const Population& population, int count) {
   return chosen;
 }
 
-Population withImmigrants(const Population& population, const std::vector<Individual>& immigrants) {
-  const std::size_t size = population.individuals.size();
-  const std::size_t replaced = std::min(immigrants.size(), size > 0 ? size - 1 : 0);
-  std::uint64_t highest = 0;
-  for (const Individual& individual : population.individuals)
-    highest = std::max(highest, individual.id + 1);
-  std::vector<bool> leaves(size, false);
-  std::vector<std::size_t> ranking = population.ranking();
-  for (std::size_t k = 0; k < replaced; ++k)
-    leaves[ranking[size - 1 - k]] = true;
-
-  Population pool;
-  pool.generation = population.generation;
-  for (std::size_t i = 0; i < size; ++i) {
-    if (!leaves[i])
-      pool.individuals.push_back(population.individuals[i]);
+std::size_t placeImmigrants(Population& next, const std::vector<Individual>& immigrants) {
+  std::size_t placed = 0;
+  for (std::size_t i = next.individuals.size(); i-- > 0 && placed < immigrants.size();) {
+    Individual& place = next.individuals[i];
+    if (place.evaluated || place.origin == Origin::elite)
+      continue;
+    Individual immigrant = immigrants[placed++];
+    immigrant.id = place.id;
+    immigrant.generation = place.generation;
+    immigrant.origin = Origin::migrant;
+    immigrant.parents.clear();
+    immigrant.eval_seconds = 0;
+    immigrant.worker_rank = -1;
+    place = std::move(immigrant);
   }
-  for (std::size_t k = 0; k < replaced; ++k) {
-    const Individual& immigrant = immigrants[k];
-    if (immigrant.id == kNoId || immigrant.id < highest)
-      throw std::invalid_argument("immigrant id " + std::to_string(immigrant.id) +
-                                  " is not above the population's ids");
-    highest = immigrant.id + 1;
-    pool.individuals.push_back(immigrant);
-  }
-  return pool;
+  return placed;
 }
 
 }  // namespace cambrian

@@ -2,6 +2,7 @@
 // who they are, and how immigrants join a population. MPI carries them (parallel/).
 #pragma once
 
+#include "core/settings.hpp"
 #include "evolution/population.hpp"
 
 #include <cstdint>
@@ -28,6 +29,9 @@ struct MigrationSettings {
   int interval = 10;  ///< generations between migrations (after generation interval - 1, ...)
   int migrants = 2;   ///< the best this many of an island's generation emigrate
   MigrationTopology topology = MigrationTopology::ring;
+
+  /// Declares the [islands] keys, bound to this object, with their ranges.
+  void declareSettings(SettingsSchema& schema);
 };
 
 /// Whether island emigrants leave after generation `generation` (every `interval`, from
@@ -50,11 +54,11 @@ std::uint64_t islandSeed(std::uint64_t run_seed, int island);
 /// to the lower id), fewer when it holds fewer.
 std::vector<std::size_t> emigrants(const Population& population, int count);
 
-/// The population breeding draws from: `population` without its worst individuals (fitness
-/// ascending, ties to the higher id), as many as there are immigrants but never all of it, and
-/// the immigrants after the rest, in the order given. They must have ids above every id of
-/// `population` (the receiving island gives them its next ids), so ids stay increasing; they
-/// keep their outcomes. Throws std::invalid_argument otherwise.
-Population withImmigrants(const Population& population, const std::vector<Individual>& immigrants);
+/// Places `immigrants` in the bred generation `next`: each takes the place, id and generation
+/// of one of its last bred individuals (the highest ids; never an elite or an individual that
+/// already holds an outcome), keeps its genome and outcome, and becomes origin migrant with no
+/// parents in this island. Returns how many were placed (fewer where `next` has fewer bred
+/// places). Deterministic: the places depend on `next` alone.
+std::size_t placeImmigrants(Population& next, const std::vector<Individual>& immigrants);
 
 }  // namespace cambrian

@@ -81,23 +81,38 @@ TEST(Migration, TheBestEvaluatedEmigrateTiesToTheLowerId) {
   EXPECT_EQ(emigrants(p, 10).size(), 4u);
 }
 
-TEST(Migration, ImmigrantsTakeTheWorstPlacesAfterTheRest) {
-  Population p = withFitness({1, 3, 0.5, 2, 0.5});  // ids 10..14; worst 12 and 14 (tie: 14 first)
-  Population arrivals = withFitness({7, 8, 9}, 20);
-  Population pool = withImmigrants(p, {arrivals.individuals[0]});
-  std::vector<std::uint64_t> ids;
-  for (const Individual& individual : pool.individuals)
-    ids.push_back(individual.id);
-  EXPECT_EQ(ids, (std::vector<std::uint64_t>{10, 11, 12, 13, 20}));
-  pool = withImmigrants(p, arrivals.individuals);
-  ids.clear();
-  for (const Individual& individual : pool.individuals)
-    ids.push_back(individual.id);
-  EXPECT_EQ(ids, (std::vector<std::uint64_t>{11, 13, 20, 21, 22}));  // 14, 12, then 10 left
-  EXPECT_EQ(pool.individuals.back().fitness(), 9);
-  // never the whole population, and never an id the population has passed
-  EXPECT_EQ(withImmigrants(withFitness({1}), arrivals.individuals).individuals.size(), 1u);
-  EXPECT_THROW(withImmigrants(p, {withFitness({5}, 11).individuals[0]}), std::invalid_argument);
+// immigrants take the last bred places of the next generation (never an elite's or an evaluated
+// one's), with their ids, keeping their genomes and outcomes
+TEST(Migration, ImmigrantsTakeTheLastBredPlacesOfTheNextGeneration) {
+  Population next = withFitness({0, 0, 0, 0, 0}, 30);  // ids 30..34, generation 4
+  next.generation = 4;
+  for (Individual& individual : next.individuals) {
+    individual.generation = 4;
+    individual.evaluated = false;
+    individual.origin = Origin::mutation;
+    individual.parents = {20};
+  }
+  next.individuals[0].origin = Origin::elite;
+  next.individuals[0].evaluated = true;
+  next.individuals[3].evaluated = true;  // an outcome already known (reused): kept
+  Population arrivals = withFitness({7, 8}, 100);
+  arrivals.individuals[1].worker_rank = 3;
+  EXPECT_EQ(placeImmigrants(next, arrivals.individuals), 2u);
+  std::vector<Origin> origins;
+  for (const Individual& individual : next.individuals)
+    origins.push_back(individual.origin);
+  EXPECT_EQ(origins, (std::vector<Origin>{Origin::elite, Origin::mutation, Origin::migrant,
+                                          Origin::mutation, Origin::migrant}));
+  const Individual& first = next.individuals[4];
+  EXPECT_EQ(first.id, 34u);
+  EXPECT_EQ(first.generation, 4u);
+  EXPECT_EQ(first.fitness(), 7);
+  EXPECT_TRUE(first.parents.empty());
+  EXPECT_EQ(next.individuals[2].id, 32u);
+  EXPECT_EQ(next.individuals[2].fitness(), 8);
+  EXPECT_EQ(next.individuals[2].worker_rank, -1);
+  // no more places than bred ones
+  EXPECT_EQ(placeImmigrants(next, withFitness({1, 2, 3, 4}, 200).individuals), 1u);
 }
 
 TEST(Migration, IslandZeroKeepsTheRunSeedAndTheOthersHaveTheirOwn) {

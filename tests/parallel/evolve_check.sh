@@ -22,6 +22,11 @@
 #   reuse_outcomes: a walk run from eight copies of one seed genome gives the same digest and
 #                   individuals table with run.reuse_outcomes on and off; on, generation 0
 #                   simulates the genome once (seven copies take its outcome, on rank -1)
+#   islands:        islands.count = 2: each island's digest and individuals table are those of
+#                   the island run alone (island 0 in one rank, in process: the run without
+#                   islands), whatever the island's rank count; the two islands differ (seeds
+#                   of their own); each writes DIR/island_K; more islands than ranks is exit 3
+#                   naming islands.count
 #   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
 #                   the run's wall time (a busy-polling rank 0 would use all of it)
 # Every job runs under `timeout`: a job still running after $limit s is a failure (a rank that
@@ -132,6 +137,30 @@ failed_ids() {
 }
 
 case $mode in
+  islands)
+    # island 0 alone is the run without islands: compare it with the in-process run
+    job plain 1 --config "$work/run.ini" --out "$work/plain"
+    expect_rc plain 0
+    job archipelago "$np" --config "$work/run.ini" --out "$work/archipelago" --islands.count 2
+    expect_rc archipelago 0
+    island0=$(awk '$1 == "island" && $2 == 0 { print $4 }' "$work/archipelago.out")
+    island1=$(awk '$1 == "island" && $2 == 1 { print $4 }' "$work/archipelago.out")
+    [ "digest $island0" = "$(digest_of plain)" ] ||
+      fail "island 0 digest $island0, expected the plain run's $(digest_of plain)"
+    [ -n "$island1" ] && [ "$island1" != "$island0" ] ||
+      fail "island 1 digest '$island1' (island 0: $island0): missing or the same"
+    for k in 0 1; do
+      [ -s "$work/archipelago/island_$k/history.h5" ] || fail "no history in island_$k"
+    done
+    cut -f1-7 "$work/plain/individuals.tsv" > "$work/plain.cut"
+    cut -f1-7 "$work/archipelago/island_0/individuals.tsv" > "$work/island0.cut"
+    diff -q "$work/plain.cut" "$work/island0.cut" > /dev/null ||
+      fail "island 0's individuals table differs from the plain run's"
+    # more islands than ranks
+    job crowded "$np" --config "$work/run.ini" --out "$work/crowded" --islands.count $((np + 1))
+    expect_rc crowded 3
+    expect_text "$work/crowded.err" "islands.count = $((np + 1))"
+    ;;
   same_run)
     job one 1 --config "$work/run.ini" --out "$work/one"
     expect_rc one 0
