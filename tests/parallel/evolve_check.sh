@@ -24,7 +24,8 @@
 #                   simulates the genome once (seven copies take its outcome, on rank -1)
 #   islands:        islands.count = 2: each island's digest and individuals table are those of
 #                   the island run alone (island 0 in one rank, in process: the run without
-#                   islands), whatever the island's rank count; the two islands differ (seeds
+#                   islands), whatever the islands' rank counts (the same island digests as
+#                   at 2 ranks, each island in process); the two islands differ (seeds
 #                   of their own); each writes DIR/island_K; more islands than ranks is exit 3
 #                   naming islands.count
 #   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
@@ -152,6 +153,12 @@ case $mode in
     for k in 0 1; do
       [ -s "$work/archipelago/island_$k/history.h5" ] || fail "no history in island_$k"
     done
+    # every island as at two ranks (each island in process): results do not depend on the
+    # ranks an island has
+    job pair 2 --config "$work/run.ini" --out "$work/pair" --islands.count 2
+    expect_rc pair 0
+    diff <(grep '^island ' "$work/pair.out") <(grep '^island ' "$work/archipelago.out") ||
+      fail "the islands' digests differ from those of the 2-rank run"
     cut -f1-7 "$work/plain/individuals.tsv" > "$work/plain.cut"
     cut -f1-7 "$work/archipelago/island_0/individuals.tsv" > "$work/island0.cut"
     diff -q "$work/plain.cut" "$work/island0.cut" > /dev/null ||
