@@ -14,6 +14,7 @@
 #include "evolution/migration.hpp"
 #include "evolution/population.hpp"
 #include "options.hpp"
+#include "parallel/archipelago.hpp"
 #include "parallel/island_layout.hpp"
 #include "parallel/mpi_context.hpp"
 #include "parallel/scheduler.hpp"
@@ -392,6 +393,15 @@ int runEvolve(int argc, char** argv) {
     run.stop_reason = stopSignalName;
     if (creature.task().needsBody()) {
       run.viable = [&creature](const Genotype& genome) { return isViable(genome, creature); };
+    }
+    // islands that trade: this island's side of the migrations
+    std::optional<Archipelago> archipelago;
+    if (breeders && s.islands.migrants > 0) {
+      archipelago.emplace(*breeders, s.islands, s.evolution.seed,
+                          static_cast<std::uint64_t>(s.evolution.generations));
+      run.exchange = [&archipelago](const Population& evaluated) {
+        return archipelago->exchange(evaluated);
+      };
     }
     // rank 0 keeps the memory it frees (glibc): every generation builds megabytes of genome
     // bytes, messages and history rows, and handing them back to the kernel only to fault them in

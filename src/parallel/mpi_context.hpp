@@ -14,9 +14,10 @@ namespace cambrian {
 
 /// Message tags of the evolve protocol.
 enum class Tag : int {
-  request = 1,  ///< rank 0 -> worker: an EvalRequest
-  result = 2,   ///< worker -> rank 0: an EvalResult
-  stop = 3,     ///< rank 0 -> worker: no more work, leave the loop
+  request = 1,   ///< rank 0 -> worker: an EvalRequest
+  result = 2,    ///< worker -> rank 0: an EvalResult
+  stop = 3,      ///< rank 0 -> worker: no more work, leave the loop
+  migrants = 4,  ///< breeding rank -> breeding rank (islands): a batch of emigrants
 };
 
 /// A received message.

@@ -10,6 +10,7 @@
 #include "evolution/breeder.hpp"
 #include "evolution/competitive_ranking.hpp"
 #include "evolution/epochs.hpp"
+#include "evolution/migration.hpp"
 #include "evolution/outcome_reuse.hpp"
 #include "evolution/statistics.hpp"
 #include "evolution/wwd_breeding.hpp"
@@ -380,6 +381,9 @@ class EvolutionRun {
 
     Population population =
         last_ ? breeder_.nextGeneration(*last_) : breeder_.initialPopulation(seeds_);
+    // islands: the immigrants of this generation take the last bred places
+    if (last_ && run_.exchange)
+      placeImmigrants(population, run_.exchange(*last_));
     OutcomeReuse reuse;
     if (run_.reuse_outcomes && run_.repeatable)
       reuse = reuseKnownOutcomes(population, last_ ? &*last_ : nullptr);

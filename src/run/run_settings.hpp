@@ -6,6 +6,7 @@
 
 #include "evolution/breeder.hpp"
 
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -30,7 +31,10 @@ struct RunSettings {
   double lock_wait = 60;          ///< seconds to wait for DIR/run.lock held by a run that has ended
 
   // handed over by the command (not settings)
-  ViabilityCheck viable;    ///< birth test for new individuals (none: accept all), rank 0 only
+  ViabilityCheck viable;  ///< birth test for new individuals (none: accept all), rank 0 only
+  /// islands: called with each evaluated generation before the next is bred; returns the
+  /// immigrants the next generation takes in (placeImmigrants); none: no islands
+  std::function<std::vector<Individual>(const Population&)> exchange;
   bool repeatable = false;  ///< the task's outcome is a function of genome and settings only
   bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
   bool terminal = false;    ///< standard output is a terminal (progress "auto" goes live)

@@ -26,8 +26,10 @@
 #                   the island run alone (island 0 in one rank, in process: the run without
 #                   islands), whatever the islands' rank counts (the same island digests as
 #                   at 2 ranks, each island in process); the two islands differ (seeds
-#                   of their own); each writes DIR/island_K; more islands than ranks is exit 3
-#                   naming islands.count
+#                   of their own); each writes DIR/island_K; trading every generation
+#                   (islands.interval 1) gives the same islands at any rank count, with two
+#                   migrants placed in generations 2 and 3 of each; more islands than ranks is
+#                   exit 3 naming islands.count
 #   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
 #                   the run's wall time (a busy-polling rank 0 would use all of it)
 # Every job runs under `timeout`: a job still running after $limit s is a failure (a rank that
@@ -163,6 +165,22 @@ case $mode in
     cut -f1-7 "$work/archipelago/island_0/individuals.tsv" > "$work/island0.cut"
     diff -q "$work/plain.cut" "$work/island0.cut" > /dev/null ||
       fail "island 0's individuals table differs from the plain run's"
+    # trading every generation: the same islands at any rank count, immigrants in the tables
+    job trading "$np" --config "$work/run.ini" --out "$work/trading" --islands.count 2 \
+      --islands.interval 1
+    expect_rc trading 0
+    job trading_pair 2 --config "$work/run.ini" --out "$work/trading_pair" --islands.count 2 \
+      --islands.interval 1
+    expect_rc trading_pair 0
+    diff <(grep '^island ' "$work/trading_pair.out") <(grep '^island ' "$work/trading.out") ||
+      fail "with migration, the islands' digests differ from those of the 2-rank run"
+    [ "$(grep -c '^island ' "$work/trading.out")" -eq 2 ] || fail "trading: not two island lines"
+    diff -q <(grep '^island ' "$work/trading.out") <(grep '^island ' "$work/archipelago.out") \
+      > /dev/null && fail "migration changed nothing"
+    for k in 0 1; do
+      migrants=$(awk -F'\t' '$4 == "migrant"' "$work/trading/island_$k/individuals.tsv" | wc -l)
+      [ "$migrants" -eq 4 ] || fail "island_$k: $migrants migrant rows, expected 4 (2 x 2)"
+    done
     # more islands than ranks
     job crowded "$np" --config "$work/run.ini" --out "$work/crowded" --islands.count $((np + 1))
     expect_rc crowded 3

@@ -1,0 +1,97 @@
+// cambrian: migration batches between the islands' breeding ranks.
+#include "parallel/archipelago.hpp"
+
+#include "cambrian/encodings.hpp"
+
+#include "core/bytes.hpp"
+#include "core/outcome_bytes.hpp"
+
+namespace cambrian {
+
+std::vector<std::uint8_t> encodeMigrants(std::uint64_t event, int source,
+                                         const std::vector<const Individual*>& individuals) {
+  std::vector<std::uint8_t> bytes;
+  ByteWriter w(bytes);
+  w.u64(event);
+  w.u64(static_cast<std::uint64_t>(source));
+  w.u64(individuals.size());
+  for (const Individual* individual : individuals) {
+    w.u64(individual->id);
+    const std::vector<std::uint8_t>& genome = individual->genomeBytes();
+    w.blob(genome.data(), genome.size());
+    writeOutcome(w, individual->outcome);
+  }
+  return bytes;
+}
+
+std::vector<Individual> decodeMigrants(const std::vector<std::uint8_t>& bytes, std::uint64_t& event,
+                                       int& source) {
+  ByteReader r(bytes.data(), bytes.size(), "migrants");
+  r.context("field 'event'");
+  event = r.u64();
+  r.context("field 'source'");
+  source = static_cast<int>(r.u64());
+  r.context("field 'count'");
+  const std::uint64_t count = r.u64();
+  std::vector<Individual> individuals;
+  for (std::uint64_t k = 0; k < count; ++k) {
+    Individual individual;
+    r.context("field 'id'");
+    individual.id = r.u64();
+    r.context("field 'genome'");
+    individual.genome = decodeGenome(r.blob());
+    individual.outcome = readOutcome(r);
+    individual.evaluated = true;
+    individuals.push_back(std::move(individual));
+  }
+  r.expectEnd();
+  return individuals;
+}
+
+Archipelago::Archipelago(MpiContext& breeders, const MigrationSettings& settings,
+                         std::uint64_t run_seed, std::uint64_t generations)
+    : breeders_(breeders), settings_(settings), run_seed_(run_seed), generations_(generations) {}
+
+void Archipelago::drain() {
+  Message message;
+  while (breeders_.tryReceiveAny(-1, message)) {
+    std::uint64_t event = 0;
+    int source = -1;
+    std::vector<Individual> batch = decodeMigrants(message.bytes, event, source);
+    arrived_.emplace(std::make_pair(event, source),
+                     std::move(batch));  // a copy sent again: kept once
+  }
+}
+
+std::vector<Individual> Archipelago::exchange(const Population& evaluated) {
+  const std::uint64_t g = evaluated.generation;
+  const int island = breeders_.rank();
+  const auto interval = static_cast<std::uint64_t>(settings_.interval);
+  // this island's best go out where some generation will take them in (at g + interval + 1)
+  if (migratesAfter(settings_, g) && g + interval + 1 < generations_) {
+    std::vector<const Individual*> best;
+    for (std::size_t index : emigrants(evaluated, settings_.migrants))
+      best.push_back(&evaluated.individuals[index]);
+    for (int target : migrationTargets(settings_, island, g, run_seed_))
+      breeders_.post(target, Tag::migrants, encodeMigrants(g, island, best));
+  }
+  breeders_.completePosted();
+  // the batches sent one interval ago come in now
+  std::vector<Individual> immigrants;
+  if (g < interval || !migratesAfter(settings_, g - interval))
+    return immigrants;
+  const std::uint64_t event = g - interval;
+  for (int source : migrationSources(settings_, island, event, run_seed_)) {
+    Backoff backoff;
+    for (drain(); !arrived_.count({event, source}); drain())
+      backoff.wait();
+    auto batch = arrived_.extract({event, source});
+    for (Individual& individual : batch.mapped())
+      immigrants.push_back(std::move(individual));
+  }
+  // batches of passed events are never taken in again
+  arrived_.erase(arrived_.begin(), arrived_.lower_bound({event + 1, 0}));
+  return immigrants;
+}
+
+}  // namespace cambrian
