@@ -19,6 +19,7 @@
 #include "parallel/mpi_context.hpp"
 #include "parallel/scheduler.hpp"
 #include "parallel/worker.hpp"
+#include "run/archipelago_index.hpp"
 #include "run/evolution_run.hpp"
 #include "run/stop_request.hpp"
 #include "store/history.hpp"
@@ -261,14 +262,6 @@ bool outputReachesATerminal() {
   return !error && (target.rfind("/dev/pts/", 0) == 0 || target.rfind("/dev/tty", 0) == 0);
 }
 
-// island `island`'s output directory below the run's: island_K, K zero-padded to the width of
-// the largest island number
-std::string islandDirectory(const std::string& out_dir, int island, int islands) {
-  const std::size_t width = std::to_string(islands - 1).size();
-  std::string number = std::to_string(island);
-  return out_dir + "/island_" + std::string(width - number.size(), '0') + number;
-}
-
 // every breeding rank's `text`, in island order, at island 0 (empty elsewhere)
 std::vector<std::string> gatherText(MpiContext& breeders, const std::string& text) {
   std::vector<std::string> texts;
@@ -373,7 +366,7 @@ int runEvolve(int argc, char** argv) {
     std::ostream& out = place.island == 0 ? std::cout : island_output;
     if (island_count > 1) {
       evolution.seed = islandSeed(s.evolution.seed, place.island);
-      run.out_dir = islandDirectory(s.run.out_dir, place.island, island_count);
+      run.out_dir = s.run.out_dir + "/" + islandDirectoryName(place.island, island_count);
     }
     if (!run.quiet) {
       if (island_count > 1 && place.island == 0)
@@ -394,6 +387,9 @@ int runEvolve(int argc, char** argv) {
     if (creature.task().needsBody()) {
       run.viable = [&creature](const Genotype& genome) { return isViable(genome, creature); };
     }
+    // the archipelago's index, by the first island
+    if (island_count > 1 && place.island == 0)
+      writeArchipelagoIndex(s.run.out_dir, s.islands, mpi.size(), s.evolution.seed);
     // islands that trade: this island's side of the migrations
     std::optional<Archipelago> archipelago;
     if (breeders && s.islands.migrants > 0) {

@@ -155,6 +155,8 @@ case $mode in
     for k in 0 1; do
       [ -s "$work/archipelago/island_$k/history.h5" ] || fail "no history in island_$k"
     done
+    expect_text "$work/archipelago/archipelago.ini" "count = 2"
+    expect_text "$work/archipelago/archipelago.ini" "[island_1]"
     # every island as at two ranks (each island in process): results do not depend on the
     # ranks an island has
     job pair 2 --config "$work/run.ini" --out "$work/pair" --islands.count 2
