@@ -396,8 +396,9 @@ int runEvolve(int argc, char** argv) {
       archipelago.emplace(*breeders, s.islands, s.evolution.seed,
                           static_cast<std::uint64_t>(s.evolution.generations));
       run.exchange = [&archipelago](const Population& evaluated) {
-        return archipelago->exchange(evaluated);
+        return archipelago->exchange(evaluated, stopRequested);
       };
+      run.stopping = [&archipelago] { archipelago->close(); };
     }
     // rank 0 keeps the memory it frees (glibc): every generation builds megabytes of genome
     // bytes, messages and history rows, and handing them back to the kernel only to fault them in

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -25,17 +26,31 @@ class Archipelago {
   Archipelago(MpiContext& breeders, const MigrationSettings& settings, std::uint64_t run_seed,
               std::uint64_t generations);
   /// Sends after `evaluated` where due, and returns the immigrants the next generation takes
-  /// (in source order, each source's best first); empty where none are due.
-  std::vector<Individual> exchange(const Population& evaluated);
+  /// (in source order, each source's best first; empty where none are due). Null where it had to
+  /// wait and `stop_requested` turned true or another island said it stopped: this island
+  /// stops too, before breeding (nothing it waits for would come).
+  std::optional<std::vector<Individual>> exchange(const Population& evaluated,
+                                                  bool (*stop_requested)() = nullptr);
+  /// Ends this island's part when its run ends or stops: tells every other island how many
+  /// batches it sent there (so none waits for more), then takes in what the others sent it and
+  /// waits for its own sends to be taken, so no message is left under way at MPI_Finalize.
+  /// Every breeding rank calls it once.
+  void close();
 
  private:
-  // receives every waiting batch into arrived_
+  // receives every waiting batch into arrived_, and the other islands' final counts
   void drain();
+  // whether the batch (event, source) can still come: not there yet, and its source has not
+  // closed with every batch it sent here taken in
+  bool mayStillCome(std::uint64_t event, int source) const;
   MpiContext& breeders_;
   MigrationSettings settings_;
   std::uint64_t run_seed_;
   std::uint64_t generations_;
   std::map<std::pair<std::uint64_t, int>, std::vector<Individual>> arrived_;  // (event, source)
+  std::vector<std::uint64_t> sent_;      // batches sent to each island
+  std::vector<std::uint64_t> received_;  // batches received from each island
+  std::vector<std::int64_t> closed_;     // each island's final count of batches to here; -1: open
 };
 
 /// A batch in its byte form: the event generation, the source island, then each individual's

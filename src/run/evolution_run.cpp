@@ -108,8 +108,22 @@ class EvolutionRun {
       stop_reason = stopReason(g);
       if (!stop_reason.empty())
         break;
-      runGeneration(g);
+      // islands: the immigrants this generation takes in (none: a stop while waiting for them)
+      std::vector<Individual> immigrants;
+      if (last_ && run_.exchange) {
+        std::optional<std::vector<Individual>> arrived = run_.exchange(*last_);
+        if (!arrived) {
+          stop_reason = stopReason(g);
+          if (stop_reason.empty())
+            stop_reason = "stopped because another island stopped";
+          break;
+        }
+        immigrants = std::move(*arrived);
+      }
+      runGeneration(g, immigrants);
     }
+    if (run_.stopping)
+      run_.stopping();
 
     // the last generation into the history, checkpointed (a resume that stops at once has none)
     finishPending(true);
@@ -369,7 +383,7 @@ class EvolutionRun {
 
   // breeds generation g (the initial population for g = 0), evaluates it while the previous
   // generation goes to the history, and records it
-  void runGeneration(std::uint64_t g) {
+  void runGeneration(std::uint64_t g, const std::vector<Individual>& immigrants) {
     // the previous generation ends here: its times are complete
     if (pending_) {
       GenerationRecord& previous = result_.generations[pending_->record];
@@ -382,8 +396,7 @@ class EvolutionRun {
     Population population =
         last_ ? breeder_.nextGeneration(*last_) : breeder_.initialPopulation(seeds_);
     // islands: the immigrants of this generation take the last bred places
-    if (last_ && run_.exchange)
-      placeImmigrants(population, run_.exchange(*last_));
+    placeImmigrants(population, immigrants);
     OutcomeReuse reuse;
     if (run_.reuse_outcomes && run_.repeatable)
       reuse = reuseKnownOutcomes(population, last_ ? &*last_ : nullptr);

@@ -7,6 +7,7 @@
 #include "evolution/breeder.hpp"
 
 #include <functional>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -33,8 +34,11 @@ struct RunSettings {
   // handed over by the command (not settings)
   ViabilityCheck viable;  ///< birth test for new individuals (none: accept all), rank 0 only
   /// islands: called with each evaluated generation before the next is bred; returns the
-  /// immigrants the next generation takes in (placeImmigrants); none: no islands
-  std::function<std::vector<Individual>(const Population&)> exchange;
+  /// immigrants the next generation takes in (placeImmigrants), or null when the run must stop
+  /// (a stop while waiting for them, another island stopped); none: no islands
+  std::function<std::optional<std::vector<Individual>>(const Population&)> exchange;
+  /// islands: called once when the run ends or stops (Archipelago::close)
+  std::function<void()> stopping;
   bool repeatable = false;  ///< the task's outcome is a function of genome and settings only
   bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
   bool terminal = false;    ///< standard output is a terminal (progress "auto" goes live)
