@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <malloc.h>
 #include <optional>
@@ -362,17 +363,24 @@ int runEvolve(int argc, char** argv) {
     // each island's own seed, output directory and (but for island 0's) output
     EvolutionSettings evolution = s.evolution;
     RunSettings run = s.run;
-    std::ostringstream island_output;
-    std::ostream& out = place.island == 0 ? std::cout : island_output;
     if (island_count > 1) {
       evolution.seed = islandSeed(s.evolution.seed, place.island);
       run.out_dir = s.run.out_dir + "/" + islandDirectoryName(place.island, island_count);
     }
+    // the other islands' lines go to DIR/island_K/evolve.log, appended (a resume adds to it;
+    // where it cannot be written, the run's own writes there fail with the reason)
+    std::ofstream island_log;
+    if (place.island != 0) {
+      std::error_code error;
+      std::filesystem::create_directories(run.out_dir, error);
+      island_log.open(run.out_dir + "/evolve.log", std::ios::app);
+    }
+    std::ostream& out = place.island == 0 ? std::cout : island_log;
     if (!run.quiet) {
       if (island_count > 1 && place.island == 0)
         out << "cambrian evolve: " << island_count << " islands of " << place.size << " to "
             << (mpi.size() + island_count - 1) / island_count << " ranks, in " << s.run.out_dir
-            << "/island_*; island 0:\n";
+            << "/island_* (the others' lines in their evolve.log); island 0:\n";
       out << "cambrian evolve: " << here.size() << " rank(s), " << evaluator->workers()
           << " evaluating; task " << creature.task().name() << ", encoding "
           << creature.encoding().name() << ", population " << s.evolution.population
@@ -381,7 +389,7 @@ int runEvolve(int argc, char** argv) {
     }
     // Chaumont 5.5: new bodies that overlap themselves are redrawn before evaluation
     run.rank_count = here.size();
-    run.terminal = outputReachesATerminal();
+    run.terminal = place.island == 0 && outputReachesATerminal();
     run.stop_requested = stopRequested;
     run.stop_reason = stopSignalName;
     if (creature.task().needsBody()) {
@@ -393,12 +401,8 @@ int runEvolve(int argc, char** argv) {
     // islands that trade: this island's side of the migrations
     std::optional<Archipelago> archipelago;
     if (breeders && s.islands.migrants > 0) {
-      archipelago.emplace(*breeders, s.islands, s.evolution.seed,
-                          static_cast<std::uint64_t>(s.evolution.generations));
-      run.exchange = [&archipelago](const Population& evaluated) {
-        return archipelago->exchange(evaluated, stopRequested);
-      };
-      run.stopping = [&archipelago] { archipelago->close(); };
+      archipelago.emplace(*breeders, s.islands, s.evolution.seed, stopRequested);
+      run.migrations = &*archipelago;
     }
     // rank 0 keeps the memory it frees (glibc): every generation builds megabytes of genome
     // bytes, messages and history rows, and handing them back to the kernel only to fault them in

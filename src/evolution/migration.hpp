@@ -6,6 +6,7 @@
 #include "evolution/population.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,27 @@ struct MigrationSettings {
 
   /// Declares the [islands] keys, bound to this object, with their ranges.
   void declareSettings(SettingsSchema& schema);
+};
+
+/// One island's side of the migrations, as the run driver sees it (parallel/archipelago.hpp
+/// carries it over MPI). Called on the breeding rank's main thread but for checkpointState and
+/// checkpointed, which the checkpoint writer calls while the next generation evaluates.
+class MigrationExchange {
+ public:
+  virtual ~MigrationExchange() = default;
+  /// After each evaluated generation, before the next is bred: sends this island's emigrants
+  /// where due and returns the immigrants the next generation takes in (placeImmigrants), or
+  /// null when the run must stop (a stop while waiting for them, another island stopped).
+  virtual std::optional<std::vector<Individual>> exchange(const Population& evaluated) = 0;
+  /// What a checkpoint keeps for a resume (opaque bytes: the batches sent that their targets'
+  /// checkpoints may still need).
+  virtual std::vector<std::uint8_t> checkpointState() const = 0;
+  /// A checkpoint of the generations before `next_generation` is written (with checkpointState).
+  virtual void checkpointed(std::uint64_t next_generation) = 0;
+  /// A resume from a checkpoint that kept `state` (empty: one written without islands).
+  virtual void resume(const std::vector<std::uint8_t>& state) = 0;
+  /// Once, when the run ends or stops.
+  virtual void close() = 0;
 };
 
 /// Whether island emigrants leave after generation `generation` (every `interval`, from

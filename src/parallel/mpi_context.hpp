@@ -18,6 +18,8 @@ enum class Tag : int {
   result = 2,    ///< worker -> rank 0: an EvalResult
   stop = 3,      ///< rank 0 -> worker: no more work, leave the loop
   migrants = 4,  ///< breeding rank -> breeding rank (islands): a batch of emigrants
+  needed = 5,    ///< breeding rank -> breeding rank (islands): the first migration its checkpoint
+                 ///< still needs
 };
 
 /// A received message.

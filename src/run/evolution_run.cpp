@@ -110,8 +110,8 @@ class EvolutionRun {
         break;
       // islands: the immigrants this generation takes in (none: a stop while waiting for them)
       std::vector<Individual> immigrants;
-      if (last_ && run_.exchange) {
-        std::optional<std::vector<Individual>> arrived = run_.exchange(*last_);
+      if (last_ && run_.migrations) {
+        std::optional<std::vector<Individual>> arrived = run_.migrations->exchange(*last_);
         if (!arrived) {
           stop_reason = stopReason(g);
           if (stop_reason.empty())
@@ -122,8 +122,8 @@ class EvolutionRun {
       }
       runGeneration(g, immigrants);
     }
-    if (run_.stopping)
-      run_.stopping();
+    if (run_.migrations)
+      run_.migrations->close();
 
     // the last generation into the history, checkpointed (a resume that stops at once has none)
     finishPending(true);
@@ -236,6 +236,8 @@ class EvolutionRun {
     breeder_.setNextId(checkpoint.next_id);
     digest_ = RunDigest(checkpoint.digest);
     last_ = std::move(checkpoint.population);
+    if (run_.migrations)
+      run_.migrations->resume(checkpoint.migrations);
     // the epoch the next generation is rated in: the last one's (the history's rows say which
     // and since when), moved on if its condition held after it
     if (!epochs_.empty() && !kept.generations.empty()) {
@@ -263,10 +265,14 @@ class EvolutionRun {
     state.digest = digest_.value();
     state.rank_count = run_.rank_count;
     state.population = *last_;
+    if (run_.migrations)
+      state.migrations = run_.migrations->checkpointState();
     writeCheckpoint(run_.out_dir, state, [&](const std::string& stage) {
       testKillPoint("checkpoint_" + stage, next_generation - 1);
     });
     testKillPoint("checkpoint_done", next_generation - 1);
+    if (run_.migrations)
+      run_.migrations->checkpointed(next_generation);
     clearHistoryStarting(run_.out_dir);
     double seconds = std::max(secondsSince(begin), 1e-9);
     checkpoint_seconds_max_ = std::max(checkpoint_seconds_max_, seconds);

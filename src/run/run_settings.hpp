@@ -5,6 +5,7 @@
 #include "cambrian/outcome.hpp"
 
 #include "evolution/breeder.hpp"
+#include "evolution/migration.hpp"
 
 #include <functional>
 #include <optional>
@@ -33,12 +34,9 @@ struct RunSettings {
 
   // handed over by the command (not settings)
   ViabilityCheck viable;  ///< birth test for new individuals (none: accept all), rank 0 only
-  /// islands: called with each evaluated generation before the next is bred; returns the
-  /// immigrants the next generation takes in (placeImmigrants), or null when the run must stop
-  /// (a stop while waiting for them, another island stopped); none: no islands
-  std::function<std::optional<std::vector<Individual>>(const Population&)> exchange;
-  /// islands: called once when the run ends or stops (Archipelago::close)
-  std::function<void()> stopping;
+  /// islands: this island's side of the migrations (null: no islands, or islands that do not
+  /// trade); must outlive the run
+  MigrationExchange* migrations = nullptr;
   bool repeatable = false;  ///< the task's outcome is a function of genome and settings only
   bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
   bool terminal = false;    ///< standard output is a terminal (progress "auto" goes live)

@@ -21,8 +21,9 @@ TEST(MpiContext, SplitHoldsTheRanksOfOneColorInOrder) {
   // a rank that gives no color joins none
   std::unique_ptr<MpiContext> roots = world->split(world->rank() == 0 ? 0 : -1);
   EXPECT_EQ(static_cast<bool>(roots), world->rank() == 0);
-  if (roots)
+  if (roots) {
     EXPECT_EQ(roots->size(), 1);
+  }
 }
 
 TEST(MpiContext, MessagesAndReductionsStayInTheirContext) {
