@@ -60,7 +60,7 @@ class Archipelago : public MigrationExchange {
   MigrationSettings settings_;
   std::uint64_t run_seed_;
   bool (*stop_requested_)();
-  std::map<std::pair<std::uint64_t, int>, std::vector<Individual>> arrived_;  // (event, source)
+  std::map<std::pair<std::uint64_t, int>, std::vector<Individual>> arrived_;   // (event, source)
   std::map<std::pair<std::uint64_t, int>, std::vector<std::uint8_t>> outbox_;  // (event, target)
   std::atomic<std::uint64_t> checkpointed_{0};  // next_generation of the last checkpoint
   std::uint64_t announced_ = 0;                 // ... the others were told of
