@@ -30,7 +30,7 @@ PROGRAM = "lineage"
 # one marker per operator, so the plot reads in black and white too
 MARKERS = {"random": "o", "seed": "*", "elite": "s", "mutation": "^", "crossover": "D", "graft": "P",
            "gene_specification": "v", "gene_split": "<", "gene_purge": ">", "branch_specification": "p",
-           "grow_stub": "h", "graft_feature": "X", "segment_crossover": "d"}
+           "grow_stub": "h", "graft_feature": "X", "segment_crossover": "d", "migrant": "8"}
 COLUMNS = ["step", "generation", "id", "operator", "fitness", "change", "parent_a", "parent_b"]
 
 

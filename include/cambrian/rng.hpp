@@ -14,6 +14,7 @@ enum class RngPurpose : std::uint64_t {
   variation,           ///< mutation, crossover, grafting
   evaluation,          ///< noise inside an evaluation (synthetic task, perturbations)
   terrain,             ///< an environment's terrain (hills)
+  migration,           ///< the island model: random topologies, island seeds
   test = 99,           ///< tests only
 };
 

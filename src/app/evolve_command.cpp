@@ -6,15 +6,20 @@
 #include "cambrian/evaluate.hpp"
 
 #include "commands.hpp"
+#include "core/hash.hpp"
 #include "core/process_usage.hpp"
 #include "evolution/competitive_ranking.hpp"
 #include "evolution/epochs.hpp"
 #include "evolution/evolution_settings.hpp"
+#include "evolution/migration.hpp"
 #include "evolution/population.hpp"
 #include "options.hpp"
+#include "parallel/archipelago.hpp"
+#include "parallel/island_layout.hpp"
 #include "parallel/mpi_context.hpp"
 #include "parallel/scheduler.hpp"
 #include "parallel/worker.hpp"
+#include "run/archipelago_index.hpp"
 #include "run/evolution_run.hpp"
 #include "run/stop_request.hpp"
 #include "store/history.hpp"
@@ -23,6 +28,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <malloc.h>
 #include <optional>
@@ -38,6 +44,7 @@ namespace {
 struct EvolveSettings {
   WorkerSettings worker;  // the creature settings and the workers' testing keys
   EvolutionSettings evolution;
+  MigrationSettings islands;
   RunSettings run;
   DispatchSettings dispatch;
 
@@ -45,6 +52,7 @@ struct EvolveSettings {
   void declare(SettingsSchema& schema) {
     worker.creature.declareSettings(schema);
     evolution.declareSettings(schema);
+    islands.declareSettings(schema);
     run.declareSettings(schema);
     dispatch.declareSettings(schema);
     worker.declareTestingSettings(schema);
@@ -255,6 +263,31 @@ bool outputReachesATerminal() {
   return !error && (target.rfind("/dev/pts/", 0) == 0 || target.rfind("/dev/tty", 0) == 0);
 }
 
+// every breeding rank's `text`, in island order, at island 0 (empty elsewhere)
+std::vector<std::string> gatherText(MpiContext& breeders, const std::string& text) {
+  std::vector<std::string> texts;
+  if (breeders.rank() != 0) {
+    breeders.send(0, Tag::result, std::vector<std::uint8_t>(text.begin(), text.end()));
+    return texts;
+  }
+  texts.resize(static_cast<std::size_t>(breeders.size()));
+  texts[0] = text;
+  for (int k = 1; k < breeders.size(); ++k) {
+    Message message = breeders.receive(Tag::result);
+    texts[static_cast<std::size_t>(message.source)].assign(message.bytes.begin(),
+                                                           message.bytes.end());
+  }
+  return texts;
+}
+
+// the run's digest over its islands' (in island order)
+std::string archipelagoDigest(const std::vector<std::string>& digests) {
+  Fnv1a hash;
+  for (const std::string& digest : digests)
+    hash.add(digest.data(), digest.size());
+  return hex16(hash.value());
+}
+
 }  // namespace
 
 int runEvolve(int argc, char** argv) {
@@ -291,38 +324,85 @@ int runEvolve(int argc, char** argv) {
   const WorkerSettings& worker = s.worker;
   const CreatureSettings& creature = worker.creature;
 
+  // islands: the job's ranks in blocks, each breeding a population of its own over a context of
+  // its own; the islands' breeding ranks share one more (every rank computes the same layout)
+  const int island_count = s.islands.islands;
+  IslandPlace place;
   try {
-    if (!root) {
-      runWorker(mpi, worker);
-      // the workers' peak memory for rank 0's summary
-      mpi.allReduceMax(processPeakResidentBytes());
+    place = islandPlace(mpi.rank(), mpi.size(), island_count);
+  } catch (const Error& e) {
+    if (root)
+      std::cerr << "cambrian evolve: error: " << e.what() << std::endl;
+    return static_cast<int>(e.code());
+  }
+  std::unique_ptr<MpiContext> island_context, breeders;
+  if (island_count > 1) {
+    island_context = mpi.split(place.island);
+    breeders = mpi.split(place.rank == 0 ? 0 : -1);
+  }
+  MpiContext& here = island_context ? *island_context : mpi;
+  const bool breeding = here.rank() == 0;
+
+  try {
+    if (!breeding) {
+      runWorker(here, worker);
+      // the workers' peak memory for their breeding rank's summary
+      here.allReduceMax(processPeakResidentBytes());
       return 0;
     }
     // rank 0: schedule over the workers, or evaluate in process with one rank
     std::unique_ptr<PopulationEvaluator> evaluator;
     MpiScheduler* scheduler = nullptr;
-    if (mpi.size() > 1) {
-      auto owned = std::make_unique<MpiScheduler>(mpi, s.dispatch);
+    if (here.size() > 1) {
+      auto owned = std::make_unique<MpiScheduler>(here, s.dispatch);
       scheduler = owned.get();
       evaluator = std::move(owned);
     } else {
       evaluator = std::make_unique<InProcessEvaluator>(worker, s.dispatch);
     }
-    if (!s.run.quiet) {
-      std::cout << "cambrian evolve: " << mpi.size() << " rank(s), " << evaluator->workers()
-                << " evaluating; task " << creature.task().name() << ", encoding "
-                << creature.encoding().name() << ", population " << s.evolution.population
-                << ", generations " << s.evolution.generations << ", seed " << s.evolution.seed
-                << std::endl;
+    // each island's own seed, output directory and (but for island 0's) output
+    EvolutionSettings evolution = s.evolution;
+    RunSettings run = s.run;
+    if (island_count > 1) {
+      evolution.seed = islandSeed(s.evolution.seed, place.island);
+      run.out_dir = s.run.out_dir + "/" + islandDirectoryName(place.island, island_count);
+    }
+    // the other islands' lines go to DIR/island_K/evolve.log, appended (a resume adds to it;
+    // where it cannot be written, the run's own writes there fail with the reason)
+    std::ofstream island_log;
+    if (place.island != 0) {
+      std::error_code error;
+      std::filesystem::create_directories(run.out_dir, error);
+      island_log.open(run.out_dir + "/evolve.log", std::ios::app);
+    }
+    std::ostream& out = place.island == 0 ? std::cout : island_log;
+    if (!run.quiet) {
+      if (island_count > 1 && place.island == 0)
+        out << "cambrian evolve: " << island_count << " islands of " << place.size << " to "
+            << (mpi.size() + island_count - 1) / island_count << " ranks, in " << s.run.out_dir
+            << "/island_* (the others' lines in their evolve.log); island 0:\n";
+      out << "cambrian evolve: " << here.size() << " rank(s), " << evaluator->workers()
+          << " evaluating; task " << creature.task().name() << ", encoding "
+          << creature.encoding().name() << ", population " << s.evolution.population
+          << ", generations " << s.evolution.generations << ", seed " << evolution.seed
+          << std::endl;
     }
     // Chaumont 5.5: new bodies that overlap themselves are redrawn before evaluation
-    RunSettings run = s.run;
-    run.rank_count = mpi.size();
-    run.terminal = outputReachesATerminal();
+    run.rank_count = here.size();
+    run.terminal = place.island == 0 && outputReachesATerminal();
     run.stop_requested = stopRequested;
     run.stop_reason = stopSignalName;
     if (creature.task().needsBody()) {
       run.viable = [&creature](const Genotype& genome) { return isViable(genome, creature); };
+    }
+    // the archipelago's index, by the first island
+    if (island_count > 1 && place.island == 0)
+      writeArchipelagoIndex(s.run.out_dir, s.islands, mpi.size(), s.evolution.seed);
+    // islands that trade: this island's side of the migrations
+    std::optional<Archipelago> archipelago;
+    if (breeders && s.islands.migrants > 0) {
+      archipelago.emplace(*breeders, s.islands, s.evolution.seed, stopRequested);
+      run.migrations = &*archipelago;
     }
     // rank 0 keeps the memory it frees (glibc): every generation builds megabytes of genome
     // bytes, messages and history rows, and handing them back to the kernel only to fault them in
@@ -330,29 +410,44 @@ int runEvolve(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     RunResult result =
-        runEvolution(s.evolution, creature.encoding(), setup.seeds, *evaluator, run, std::cout);
-    // rank 0's and the largest worker's peak memory (one process when evaluating in process)
+        runEvolution(evolution, creature.encoding(), setup.seeds, *evaluator, run, out);
+    // the breeding rank's and the largest worker's peak memory (one process when evaluating in
+    // process)
     std::uint64_t rank0_peak = processPeakResidentBytes();
     std::uint64_t worker_peak = rank0_peak;
     if (scheduler) {
       scheduler->stopWorkers();
-      worker_peak = mpi.allReduceMax(std::uint64_t{0});
+      worker_peak = here.allReduceMax(std::uint64_t{0});
     }
 
-    // the run digest (so far, when stopped) and rank 0's cost
-    std::cout << (result.stopped ? "digest_so_far " : "digest ") << result.digest << "\n"
+    // the run digest (so far, when stopped) and rank 0's cost; with islands each island's
+    // digest, and the run's over them, the breeding ranks' largest figures
+    std::string digest = result.digest;
+    bool stopped = result.stopped;
+    if (breeders) {
+      std::vector<std::string> digests = gatherText(*breeders, result.digest);
+      stopped = breeders->allReduceMax(result.stopped ? 1 : 0) != 0;
+      rank0_peak = breeders->allReduceMax(rank0_peak);
+      worker_peak = breeders->allReduceMax(worker_peak);
+      if (place.island != 0)
+        return 0;
+      digest = archipelagoDigest(digests);
+      for (std::size_t k = 0; k < digests.size(); ++k)
+        std::cout << "island " << k << " digest " << digests[k] << "\n";
+    }
+    std::cout << (stopped ? "digest_so_far " : "digest ") << digest << "\n"
               << "rank0_cpu_seconds " << result.rank0_cpu_seconds << "\n"
               << "wall_seconds " << result.wall_seconds << "\n"
               << "rank0_peak_rss_mb " << rank0_peak / 1e6 << "\n"
               << "worker_peak_rss_mb " << worker_peak / 1e6 << "\n"
-              << "history " << s.run.out_dir << "/history.h5\n"
-              << "tables " << s.run.out_dir << "/individuals.tsv " << s.run.out_dir
+              << "history " << run.out_dir << "/history.h5\n"
+              << "tables " << run.out_dir << "/individuals.tsv " << run.out_dir
               << "/generations.tsv" << std::endl;
     return 0;
   } catch (const Error& e) {
-    mpi.abort(root ? e.code() : ExitCode::worker_failure, e.what());
+    mpi.abort(breeding ? e.code() : ExitCode::worker_failure, e.what());
   } catch (const std::exception& e) {
-    mpi.abort(root ? ExitCode::failure : ExitCode::worker_failure, e.what());
+    mpi.abort(breeding ? ExitCode::failure : ExitCode::worker_failure, e.what());
   }
 }
 

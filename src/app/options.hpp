@@ -50,7 +50,7 @@ po::variables_map parseOptions(int argc, const char* const* argv,
                                const std::set<std::string>& foreign_sections = {});
 
 /// The sections of an experiment file that only `evolve` reads.
-inline const std::set<std::string> kEvolveOnlySections = {"evolution", "run"};
+inline const std::set<std::string> kEvolveOnlySections = {"evolution", "islands", "run"};
 
 /// Runs every range check of `schema`; the ConfigError names where the bad value came from.
 void checkSettings(const SettingsSchema& schema, const OptionOrigins& origins);

@@ -33,6 +33,8 @@ const char* originName(Origin origin) {
       return "grow_stub";
     case Origin::graft_feature:
       return "graft_feature";
+    case Origin::migrant:
+      return "migrant";
     case Origin::segment_crossover:
       return "segment_crossover";
   }

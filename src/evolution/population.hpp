@@ -28,9 +28,10 @@ enum class Origin : std::uint8_t {
   grow_stub,
   graft_feature,
   segment_crossover,  ///< Minemonics' crossover (evolution.reaper_crossover)
+  migrant,            ///< arrived from another island (islands.count), with its outcome
 };
 /// Number of Origin values.
-constexpr int kOriginKinds = 13;
+constexpr int kOriginKinds = 14;
 
 /// Lower-case origin name ("crossover").
 const char* originName(Origin origin);

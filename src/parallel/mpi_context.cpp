@@ -30,17 +30,17 @@ void check(int code, const char* call, int rank) {
 
 // receives a message from `source` with `tag` (either may be a wildcard) into `out` when one is
 // waiting: probe without blocking, then receive exactly what is there; false when none is
-bool receiveWaiting(int source, int tag, int rank, Message& out) {
+bool receiveWaiting(MPI_Comm comm, int source, int tag, int rank, Message& out) {
   int flag = 0;
   MPI_Status status;
-  check(MPI_Iprobe(source, tag, MPI_COMM_WORLD, &flag, &status), "MPI_Iprobe", rank);
+  check(MPI_Iprobe(source, tag, comm, &flag, &status), "MPI_Iprobe", rank);
   if (!flag)
     return false;
   int count = 0;
   MPI_Get_count(&status, MPI_BYTE, &count);
   out.bytes.resize(static_cast<std::size_t>(count));
-  check(MPI_Recv(out.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG,
-                 MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+  check(MPI_Recv(out.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, comm,
+                 MPI_STATUS_IGNORE),
         "MPI_Recv", rank);
   out.source = status.MPI_SOURCE;
   out.tag = static_cast<Tag>(status.MPI_TAG);
@@ -79,6 +79,17 @@ Message waitFor(Try tryOnce, long longest_sleep_micros, long urgent_micros) {
 
 }  // namespace
 
+// the communicator a context speaks over: the world, or one of split()'s (freed with it)
+struct MpiContext::Communicator {
+  MPI_Comm comm = MPI_COMM_WORLD;
+  ~Communicator() {
+    int finalised = 0;
+    MPI_Finalized(&finalised);
+    if (comm != MPI_COMM_WORLD && comm != MPI_COMM_NULL && !finalised)
+      MPI_Comm_free(&comm);
+  }
+};
+
 // sends under way: each request beside the bytes it reads from (a list, so they never move)
 struct MpiContext::PostedSends {
   struct Send {
@@ -88,7 +99,8 @@ struct MpiContext::PostedSends {
   std::list<Send> sends;
 };
 
-MpiContext::MpiContext(int* argc, char*** argv) : posted_(std::make_unique<PostedSends>()) {
+MpiContext::MpiContext(int* argc, char*** argv)
+    : communicator_(std::make_unique<Communicator>()), posted_(std::make_unique<PostedSends>()) {
   // initialise unless someone already did
   int initialised = 0;
   MPI_Initialized(&initialised);
@@ -107,12 +119,30 @@ MpiContext::MpiContext(int* argc, char*** argv) : posted_(std::make_unique<Poste
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
 
+MpiContext::MpiContext(std::unique_ptr<Communicator> communicator)
+    : communicator_(std::move(communicator)), posted_(std::make_unique<PostedSends>()) {
+  MPI_Comm_set_errhandler(communicator_->comm, MPI_ERRORS_RETURN);
+  MPI_Comm_rank(communicator_->comm, &rank_);
+  MPI_Comm_size(communicator_->comm, &size_);
+}
+
+std::unique_ptr<MpiContext> MpiContext::split(int color) const {
+  auto communicator = std::make_unique<Communicator>();
+  check(MPI_Comm_split(communicator_->comm, color < 0 ? MPI_UNDEFINED : color, rank_,
+                       &communicator->comm),
+        "MPI_Comm_split", rank_);
+  if (communicator->comm == MPI_COMM_NULL)
+    return nullptr;
+  return std::unique_ptr<MpiContext>(new MpiContext(std::move(communicator)));
+}
+
 MpiContext::~MpiContext() {
   // sends still under way are abandoned: MPI_Finalize or MPI_Abort follows
   for (auto& send : posted_->sends) {
     if (send.request != MPI_REQUEST_NULL)
       MPI_Request_free(&send.request);
   }
+  communicator_.reset();
   int finalised = 0;
   MPI_Finalized(&finalised);
   if (owns_ && !finalised)
@@ -121,7 +151,7 @@ MpiContext::~MpiContext() {
 
 void MpiContext::send(int destination, Tag tag, const std::vector<std::uint8_t>& bytes) {
   check(MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, destination,
-                 static_cast<int>(tag), MPI_COMM_WORLD),
+                 static_cast<int>(tag), communicator_->comm),
         "MPI_Send", rank_);
 }
 
@@ -129,7 +159,7 @@ void MpiContext::post(int destination, Tag tag, std::vector<std::uint8_t> bytes)
   auto& send = posted_->sends.emplace_back();
   send.bytes = std::move(bytes);
   check(MPI_Isend(send.bytes.data(), static_cast<int>(send.bytes.size()), MPI_BYTE, destination,
-                  static_cast<int>(tag), MPI_COMM_WORLD, &send.request),
+                  static_cast<int>(tag), communicator_->comm, &send.request),
         "MPI_Isend", rank_);
 }
 
@@ -166,12 +196,13 @@ void MpiContext::waitPosted() {
 
 bool MpiContext::tryReceiveAny(int source, Message& out) {
   // any tag, from `source` or (when negative) any rank
-  return receiveWaiting(source < 0 ? MPI_ANY_SOURCE : source, MPI_ANY_TAG, rank_, out);
+  return receiveWaiting(communicator_->comm, source < 0 ? MPI_ANY_SOURCE : source, MPI_ANY_TAG,
+                        rank_, out);
 }
 
 bool MpiContext::tryReceive(Tag tag, Message& out) {
   // this tag, from any rank
-  return receiveWaiting(MPI_ANY_SOURCE, static_cast<int>(tag), rank_, out);
+  return receiveWaiting(communicator_->comm, MPI_ANY_SOURCE, static_cast<int>(tag), rank_, out);
 }
 
 Message MpiContext::receiveAny(int source, long longest_sleep_micros, long urgent_micros) {
@@ -185,15 +216,15 @@ Message MpiContext::receive(Tag tag) {
 
 int MpiContext::allReduceMax(int value) {
   int result = value;
-  check(MPI_Allreduce(&value, &result, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce",
+  check(MPI_Allreduce(&value, &result, 1, MPI_INT, MPI_MAX, communicator_->comm), "MPI_Allreduce",
         rank_);
   return result;
 }
 
 std::uint64_t MpiContext::allReduceMax(std::uint64_t value) {
   std::uint64_t result = value;
-  check(MPI_Allreduce(&value, &result, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce",
-        rank_);
+  check(MPI_Allreduce(&value, &result, 1, MPI_UINT64_T, MPI_MAX, communicator_->comm),
+        "MPI_Allreduce", rank_);
   return result;
 }
 

@@ -14,9 +14,12 @@ namespace cambrian {
 
 /// Message tags of the evolve protocol.
 enum class Tag : int {
-  request = 1,  ///< rank 0 -> worker: an EvalRequest
-  result = 2,   ///< worker -> rank 0: an EvalResult
-  stop = 3,     ///< rank 0 -> worker: no more work, leave the loop
+  request = 1,   ///< rank 0 -> worker: an EvalRequest
+  result = 2,    ///< worker -> rank 0: an EvalResult
+  stop = 3,      ///< rank 0 -> worker: no more work, leave the loop
+  migrants = 4,  ///< breeding rank -> breeding rank (islands): a batch of emigrants
+  needed = 5,    ///< breeding rank -> breeding rank (islands): the first migration its checkpoint
+                 ///< still needs
 };
 
 /// A received message.
@@ -34,15 +37,20 @@ class MpiContext {
  public:
   /// Calls MPI_Init unless MPI is already initialised.
   MpiContext(int* argc, char*** argv);
-  /// Calls MPI_Finalize when this object initialised MPI.
+  /// Calls MPI_Finalize when this object initialised MPI (a split context frees its
+  /// communicator instead).
   ~MpiContext();
   MpiContext(const MpiContext&) = delete;
   MpiContext& operator=(const MpiContext&) = delete;
 
-  /// This process' rank in MPI_COMM_WORLD.
+  /// This process' rank in this context's communicator (MPI_COMM_WORLD unless split).
   int rank() const { return rank_; }
-  /// Number of ranks in MPI_COMM_WORLD.
+  /// Number of ranks in this context's communicator.
   int size() const { return size_; }
+  /// The ranks of this context that give the same `color` (>= 0), ordered as here, as a context
+  /// of their own; null for a negative color (the rank joins none). Collective: every rank of
+  /// this context calls it. Messages in one context never match receives in another.
+  std::unique_ptr<MpiContext> split(int color) const;
 
   /// Sends `bytes` to `destination` with `tag` (standard-mode send).
   void send(int destination, Tag tag, const std::vector<std::uint8_t>& bytes);
@@ -71,14 +79,17 @@ class MpiContext {
   std::uint64_t allReduceMax(std::uint64_t value);
 
   /// Prints "cambrian evolve: rank R: message" to stderr and calls MPI_Abort with `code`, which
-  /// ends every rank of the job with that exit code. Never returns.
+  /// ends every rank of the job (of every context) with that exit code. Never returns.
   [[noreturn]] void abort(ExitCode code, const std::string& message) const;
 
  private:
   struct PostedSends;
+  struct Communicator;
+  explicit MpiContext(std::unique_ptr<Communicator> communicator);
   int rank_ = 0;
   int size_ = 1;
   bool owns_ = false;
+  std::unique_ptr<Communicator> communicator_;
   std::unique_ptr<PostedSends> posted_;
 };
 

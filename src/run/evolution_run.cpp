@@ -10,6 +10,7 @@
 #include "evolution/breeder.hpp"
 #include "evolution/competitive_ranking.hpp"
 #include "evolution/epochs.hpp"
+#include "evolution/migration.hpp"
 #include "evolution/outcome_reuse.hpp"
 #include "evolution/statistics.hpp"
 #include "evolution/wwd_breeding.hpp"
@@ -107,8 +108,22 @@ class EvolutionRun {
       stop_reason = stopReason(g);
       if (!stop_reason.empty())
         break;
-      runGeneration(g);
+      // islands: the immigrants this generation takes in (none: a stop while waiting for them)
+      std::vector<Individual> immigrants;
+      if (last_ && run_.migrations) {
+        std::optional<std::vector<Individual>> arrived = run_.migrations->exchange(*last_);
+        if (!arrived) {
+          stop_reason = stopReason(g);
+          if (stop_reason.empty())
+            stop_reason = "stopped because another island stopped";
+          break;
+        }
+        immigrants = std::move(*arrived);
+      }
+      runGeneration(g, immigrants);
     }
+    if (run_.migrations)
+      run_.migrations->close();
 
     // the last generation into the history, checkpointed (a resume that stops at once has none)
     finishPending(true);
@@ -221,6 +236,8 @@ class EvolutionRun {
     breeder_.setNextId(checkpoint.next_id);
     digest_ = RunDigest(checkpoint.digest);
     last_ = std::move(checkpoint.population);
+    if (run_.migrations)
+      run_.migrations->resume(checkpoint.migrations);
     // the epoch the next generation is rated in: the last one's (the history's rows say which
     // and since when), moved on if its condition held after it
     if (!epochs_.empty() && !kept.generations.empty()) {
@@ -248,10 +265,14 @@ class EvolutionRun {
     state.digest = digest_.value();
     state.rank_count = run_.rank_count;
     state.population = *last_;
+    if (run_.migrations)
+      state.migrations = run_.migrations->checkpointState();
     writeCheckpoint(run_.out_dir, state, [&](const std::string& stage) {
       testKillPoint("checkpoint_" + stage, next_generation - 1);
     });
     testKillPoint("checkpoint_done", next_generation - 1);
+    if (run_.migrations)
+      run_.migrations->checkpointed(next_generation);
     clearHistoryStarting(run_.out_dir);
     double seconds = std::max(secondsSince(begin), 1e-9);
     checkpoint_seconds_max_ = std::max(checkpoint_seconds_max_, seconds);
@@ -368,7 +389,7 @@ class EvolutionRun {
 
   // breeds generation g (the initial population for g = 0), evaluates it while the previous
   // generation goes to the history, and records it
-  void runGeneration(std::uint64_t g) {
+  void runGeneration(std::uint64_t g, const std::vector<Individual>& immigrants) {
     // the previous generation ends here: its times are complete
     if (pending_) {
       GenerationRecord& previous = result_.generations[pending_->record];
@@ -380,6 +401,8 @@ class EvolutionRun {
 
     Population population =
         last_ ? breeder_.nextGeneration(*last_) : breeder_.initialPopulation(seeds_);
+    // islands: the immigrants of this generation take the last bred places
+    placeImmigrants(population, immigrants);
     OutcomeReuse reuse;
     if (run_.reuse_outcomes && run_.repeatable)
       reuse = reuseKnownOutcomes(population, last_ ? &*last_ : nullptr);

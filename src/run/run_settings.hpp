@@ -5,7 +5,10 @@
 #include "cambrian/outcome.hpp"
 
 #include "evolution/breeder.hpp"
+#include "evolution/migration.hpp"
 
+#include <functional>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -30,7 +33,10 @@ struct RunSettings {
   double lock_wait = 60;          ///< seconds to wait for DIR/run.lock held by a run that has ended
 
   // handed over by the command (not settings)
-  ViabilityCheck viable;    ///< birth test for new individuals (none: accept all), rank 0 only
+  ViabilityCheck viable;  ///< birth test for new individuals (none: accept all), rank 0 only
+  /// islands: this island's side of the migrations (null: no islands, or islands that do not
+  /// trade); must outlive the run
+  MigrationExchange* migrations = nullptr;
   bool repeatable = false;  ///< the task's outcome is a function of genome and settings only
   bool history = true;      ///< write DIR/history.h5 generation by generation (SWMR)
   bool terminal = false;    ///< standard output is a terminal (progress "auto" goes live)

@@ -133,6 +133,9 @@ std::uint64_t stateHash(const CheckpointState& s, const C& columns, ForEach forE
     hash.add(&v, sizeof v);
   }
   forEach(columns, [&](const char*, const auto& values) { hashColumn(hash, values); });
+  // islands only (a checkpoint without them hashes as before)
+  if (!s.migrations.empty())
+    hashColumn(hash, s.migrations);
   return hash.value();
 }
 
@@ -384,6 +387,8 @@ void writeFile(const std::string& path, const CheckpointState& state,
   });
   if (!ok)
     fail("cannot write /population");
+  if (!state.migrations.empty() && !writeColumn(f, "migrations", state.migrations))
+    fail("cannot write /migrations");
   if (observer)
     observer("write");
   group.reset();
@@ -492,6 +497,10 @@ CheckpointState readCheckpointHere(const std::string& path) {
          " does not follow generation " + std::to_string(generation) + " (corrupt checkpoint)");
 
   readString(f, "config_hash", state.config_hash);
+
+  // islands: the migration state (in the state hash)
+  if (H5Lexists(f, "migrations", H5P_DEFAULT) > 0 && !readColumn(f, "migrations", state.migrations))
+    fail("dataset /migrations unreadable (corrupt checkpoint)");
 
   // the population, checked against the state hash (version 1: its own columns)
   Handle group(H5Gopen2(f, "population", H5P_DEFAULT), H5Gclose);

@@ -11,6 +11,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace cambrian {
 
@@ -35,6 +36,9 @@ struct CheckpointState {
   std::string cambrian_version;       ///< version of the cambrian that wrote it (read only)
   std::string git_hash;               ///< and its git commit (read only)
   Population population;              ///< the last evaluated generation, every field kept
+  /// islands: the island's migration state (MigrationExchange::checkpointState; opaque here),
+  /// dataset /migrations; empty without islands (no dataset)
+  std::vector<std::uint8_t> migrations;
 };
 
 /// DIR/checkpoint.h5.

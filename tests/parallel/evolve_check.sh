@@ -22,6 +22,14 @@
 #   reuse_outcomes: a walk run from eight copies of one seed genome gives the same digest and
 #                   individuals table with run.reuse_outcomes on and off; on, generation 0
 #                   simulates the genome once (seven copies take its outcome, on rank -1)
+#   islands:        islands.count = 2: each island's digest and individuals table are those of
+#                   the island run alone (island 0 in one rank, in process: the run without
+#                   islands), whatever the islands' rank counts (the same island digests as
+#                   at 2 ranks, each island in process); the two islands differ (seeds
+#                   of their own); each writes DIR/island_K; trading every generation
+#                   (islands.interval 1) gives the same islands at any rank count, with two
+#                   migrants placed in generations 2 and 3 of each; more islands than ranks is
+#                   exit 3 naming islands.count
 #   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
 #                   the run's wall time (a busy-polling rank 0 would use all of it)
 # Every job runs under `timeout`: a job still running after $limit s is a failure (a rank that
@@ -132,6 +140,54 @@ failed_ids() {
 }
 
 case $mode in
+  islands)
+    # island 0 alone is the run without islands: compare it with the in-process run
+    job plain 1 --config "$work/run.ini" --out "$work/plain"
+    expect_rc plain 0
+    job archipelago "$np" --config "$work/run.ini" --out "$work/archipelago" --islands.count 2
+    expect_rc archipelago 0
+    island0=$(awk '$1 == "island" && $2 == 0 { print $4 }' "$work/archipelago.out")
+    island1=$(awk '$1 == "island" && $2 == 1 { print $4 }' "$work/archipelago.out")
+    [ "digest $island0" = "$(digest_of plain)" ] ||
+      fail "island 0 digest $island0, expected the plain run's $(digest_of plain)"
+    [ -n "$island1" ] && [ "$island1" != "$island0" ] ||
+      fail "island 1 digest '$island1' (island 0: $island0): missing or the same"
+    for k in 0 1; do
+      [ -s "$work/archipelago/island_$k/history.h5" ] || fail "no history in island_$k"
+    done
+    expect_text "$work/archipelago/archipelago.ini" "count = 2"
+    expect_text "$work/archipelago/archipelago.ini" "[island_1]"
+    # every island as at two ranks (each island in process): results do not depend on the
+    # ranks an island has
+    job pair 2 --config "$work/run.ini" --out "$work/pair" --islands.count 2
+    expect_rc pair 0
+    diff <(grep '^island ' "$work/pair.out") <(grep '^island ' "$work/archipelago.out") ||
+      fail "the islands' digests differ from those of the 2-rank run"
+    cut -f1-7 "$work/plain/individuals.tsv" > "$work/plain.cut"
+    cut -f1-7 "$work/archipelago/island_0/individuals.tsv" > "$work/island0.cut"
+    diff -q "$work/plain.cut" "$work/island0.cut" > /dev/null ||
+      fail "island 0's individuals table differs from the plain run's"
+    # trading every generation: the same islands at any rank count, immigrants in the tables
+    job trading "$np" --config "$work/run.ini" --out "$work/trading" --islands.count 2 \
+      --islands.interval 1
+    expect_rc trading 0
+    job trading_pair 2 --config "$work/run.ini" --out "$work/trading_pair" --islands.count 2 \
+      --islands.interval 1
+    expect_rc trading_pair 0
+    diff <(grep '^island ' "$work/trading_pair.out") <(grep '^island ' "$work/trading.out") ||
+      fail "with migration, the islands' digests differ from those of the 2-rank run"
+    [ "$(grep -c '^island ' "$work/trading.out")" -eq 2 ] || fail "trading: not two island lines"
+    diff -q <(grep '^island ' "$work/trading.out") <(grep '^island ' "$work/archipelago.out") \
+      > /dev/null && fail "migration changed nothing"
+    for k in 0 1; do
+      migrants=$(awk -F'\t' '$4 == "migrant"' "$work/trading/island_$k/individuals.tsv" | wc -l)
+      [ "$migrants" -eq 4 ] || fail "island_$k: $migrants migrant rows, expected 4 (2 x 2)"
+    done
+    # more islands than ranks
+    job crowded "$np" --config "$work/run.ini" --out "$work/crowded" --islands.count $((np + 1))
+    expect_rc crowded 3
+    expect_text "$work/crowded.err" "islands.count = $((np + 1))"
+    ;;
   same_run)
     job one 1 --config "$work/run.ini" --out "$work/one"
     expect_rc one 0

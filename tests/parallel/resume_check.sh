@@ -12,6 +12,12 @@
 #                 overwritten); run-only keys may change; --fresh starts over; raising
 #                 evolution.generations extends a finished run; a corrupt checkpoint is refused
 #   walk:         a tiny walk run killed and resumed equals the straight one
+#   islands:      islands trading every generation (islands.count = NP, at least 2, each in
+#                 process or with workers), killed at several points (each island resumes from
+#                 its own last checkpoint, the batches its neighbours may have lost sent again),
+#                 stopped by SIGUSR1 and continued, resumed at another rank count, and extended
+#                 by raising evolution.generations: every island's digest and history as the
+#                 straight run's
 #   disk_full:    the output on a small tmpfs that fills at eleven points of the run (history
 #                 appends, checkpoints): exit 5 naming the file, the system's reason and the way
 #                 on; with room again the same command finishes identical to the straight run.
@@ -229,6 +235,80 @@ case $mode in
     grep -q "$work/changed/checkpoint.h5: .*checkpoint.prev.h5 is good .*--fresh" \
       "$work/corrupt.err"
     cmp "$work/changed/checkpoint.h5" "$work/cut.h5"
+    ;;
+  islands)
+    islands=$((np < 2 ? 2 : np))
+    [ "$np" -ge 2 ] || np=2
+    cat >> "$work/run.ini" <<INI
+[islands]
+count = $islands
+interval = 1
+migrants = 2
+INI
+    # the archipelago's runs equal: the run's and every island's digest and history
+    same_islands() {
+      local a=$1 b=$2
+      diff <(grep -e '^island ' -e '^digest ' "$work/$a.txt") \
+        <(grep -e '^island ' -e '^digest ' "$work/$b.txt")
+      [ "$(grep -c '^island ' "$work/$b.txt")" -eq "$islands" ]
+      for dir in "$work/$a"/island_*; do
+        "$compare" "$dir/history.h5" "$work/$b/$(basename "$dir")/history.h5"
+        diff <(cut -f1-7 "$dir/individuals.tsv") \
+          <(cut -f1-7 "$work/$b/$(basename "$dir")/individuals.tsv")
+      done
+    }
+    islands_killed() {
+      local name=$1 point=$2 resume_np=${3:-$np}
+      set +e
+      job "$np" --config "$work/run.ini" --out "$work/$name" --run.test_kill_at "$point" \
+        > "$work/$name.killed.txt" 2> "$work/$name.killed.err"
+      local rc=$?
+      set -e
+      echo "$point: killed run exit $rc"
+      [ "$rc" -ne 0 ]
+      grep -q "run.test_kill_at $point: SIGKILL" "$work/$name.killed.err"
+      job "$resume_np" --config "$work/run.ini" --out "$work/$name" > "$work/$name.txt"
+      grep "resuming from" "$work/$name.txt"
+      # the other islands' lines in their own logs
+      grep -q "resuming from $work/$name/island_1/checkpoint.h5" "$work/$name/island_1/evolve.log"
+      same_islands straight "$name"
+    }
+    straight straight
+    # migrants were placed: the islands trade
+    [ "$(awk -F'\t' '$4 == "migrant"' "$work/straight/island_0/individuals.tsv" | wc -l)" -gt 0 ]
+    islands_killed mid_generation evaluation:3
+    islands_killed after_history history:4
+    islands_killed after_checkpoint checkpoint_done:2
+    islands_killed mid_write checkpoint_write:3
+    # at another rank count (as many islands need as many ranks)
+    islands_killed other_ranks evaluation:4 $((np + 1))
+    # a finished run extended: the batches of its last generations were kept for it
+    sed -i 's/^generations = 6/generations = 4/' "$work/run.ini"
+    job "$np" --config "$work/run.ini" --out "$work/extended" > "$work/extended.first.txt"
+    sed -i 's/^generations = 4/generations = 6/' "$work/run.ini"
+    job "$np" --config "$work/run.ini" --out "$work/extended" > "$work/extended.txt"
+    same_islands straight extended
+    # SIGUSR1 to the job: every island stops cleanly, the same command finishes the run
+    sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 20000/' "$work/run.ini"
+    straight slow_straight
+    (job_exec "$np" --config "$work/run.ini" --out "$work/stopped" --run.quiet false \
+      > "$work/stopped.first.txt" 2> "$work/stopped.err") &
+    pid=$!
+    for _ in $(seq 1 600); do
+      grep -q '^gen 2/' "$work/stopped.first.txt" 2> /dev/null && break
+      sleep 0.05
+    done
+    kill -USR1 "$pid"
+    set +e
+    wait "$pid"
+    rc=$?
+    set -e
+    cat "$work/stopped.first.txt"
+    echo "stopped run exit $rc"
+    [ "$rc" -eq 0 ]
+    grep -q "stopped .* run the same command again" "$work/stopped.first.txt"
+    job "$np" --config "$work/run.ini" --out "$work/stopped" > "$work/stopped.txt"
+    same_islands slow_straight stopped
     ;;
   walk)
     cat > "$work/run.ini" <<INI

@@ -271,6 +271,28 @@ TEST(Checkpoint, ChangedContentsFailTheStateHash) {
   EXPECT_NE(message.find("state_hash"), std::string::npos) << message;
 }
 
+TEST(Checkpoint, KeepsAnIslandsMigrationStateUnderTheStateHash) {
+  std::string dir = tempDir("migrations");
+  CheckpointState state = makeState(2);
+  state.migrations = {1, 0, 0, 0, 0, 0, 0, 0, 42, 7};
+  writeCheckpoint(dir, state);
+  EXPECT_EQ(readCheckpoint(checkpointPath(dir)).migrations, state.migrations);
+  // without islands, no dataset and nothing read back
+  std::string plain = tempDir("no_migrations");
+  writeCheckpoint(plain, makeState(2));
+  EXPECT_TRUE(readCheckpoint(checkpointPath(plain)).migrations.empty());
+  // a changed byte fails the state hash
+  patchFile(checkpointPath(dir), [](hid_t file) {
+    hid_t dataset = H5Dopen2(file, "migrations", H5P_DEFAULT);
+    std::uint8_t bytes[10] = {1, 0, 0, 0, 0, 0, 0, 0, 43, 7};
+    H5Dwrite(dataset, H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes);
+    H5Dclose(dataset);
+  });
+  auto [code, message] = failure([&] { readCheckpoint(checkpointPath(dir)); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("state_hash"), std::string::npos) << message;
+}
+
 TEST(Checkpoint, MissingButExpectedIsAnError) {
   // a previous checkpoint without a current one
   std::string dir = tempDir("missing_current");
