@@ -15,6 +15,7 @@ always consistent.
         print(h.decode_genomes([42])[42])  # the genome's text and body, as cambrian inspect
 """
 
+import configparser
 import os
 import signal
 import time
@@ -573,6 +574,25 @@ def worker_count(attributes, generations=None):
         return int(generations["workers"][0])
     ranks = int(attributes.get("rank_count", 1))
     return max(ranks - 1, 1)
+
+
+def island_histories(directory):
+    """The histories of a run's output directory as [(island, path)]: for an island run (its
+    index DIR/archipelago.ini, docs/parallel.md) each island's DIR/<directory>/history.h5 in
+    island order, else [(0, DIR/history.h5)]. Raises InputFileError naming the index when it
+    cannot be read."""
+    index = os.path.join(directory, "archipelago.ini")
+    if not os.path.exists(index):
+        return [(0, os.path.join(directory, "history.h5"))]
+    parser = configparser.ConfigParser(interpolation=None)
+    try:
+        with open(index) as handle:
+            parser.read_file(handle)
+        count = parser.getint("islands", "count")
+        return [(k, os.path.join(directory, parser.get(f"island_{k}", "directory"), "history.h5"))
+                for k in range(count)]
+    except (OSError, ValueError, configparser.Error) as error:
+        raise InputFileError(f"{index}: {error}") from error
 
 
 def config_value(attributes, section, key, default=None):

@@ -42,6 +42,15 @@ generation time: `work` (total cost / W), `dispatch` (rank 0 handing out E evalu
 few evaluations per worker, the slowest creature), or `serial` (S0).
 With --sweep, compares the model with the measured points of a sweep (model vs measured).
 
+Islands (--island-workers w): from 2w workers on, the workers form W / w islands of w workers
+each (each island's breeding rank besides them), every island breeding a population of its own
+(--populations are per island). Each island's generations last as the model above gives for w
+workers; after a migration event (every --interval generations, --topology ring, full or random
+as [islands] does) an island breeds its next generation only once its sources have finished the
+generation whose migrants it takes in, one interval earlier (archipelago_time). Speedup is the
+archipelago's throughput against one island on one worker: K * T(1) / T_archipelago; the bound
+`migration` means the waits for sources add more than 10 % to an island's own generation time.
+
     python3 analysis/scaling_model.py --history runs/scaling/s/w1/r1/history.h5 --output model.png
     python3 analysis/scaling_model.py --cost-mean 0.01 --serial 0.002 --latency 1e-4 --output model.png
     python3 analysis/scaling_model.py --history h.h5 --sweep runs/scaling/s --output model.png
@@ -67,9 +76,12 @@ import cambrian_history as ch  # noqa: E402
 import scaling  # noqa: E402
 
 PROGRAM = "scaling_model"
-LIMITS = ("work", "dispatch", "barrier", "serial")
+LIMITS = ("work", "dispatch", "barrier", "serial", "migration")
 BARRIER_SLACK = 1.25  # zero-latency span / (total cost / W) above which the barrier is the bound
-MARKERS = {"work": "o", "dispatch": "s", "barrier": "^", "serial": "D"}
+MARKERS = {"work": "o", "dispatch": "s", "barrier": "^", "serial": "D", "migration": "v"}
+MIGRATION_SLACK = 1.1  # archipelago / island generation time above which migration is the bound
+ISLAND_GENERATIONS = 100  # generations simulated per archipelago point
+ISLAND_SAMPLES = 20  # island generation times an archipelago point draws from (at least)
 IN_FLIGHT = 2  # evaluations MpiScheduler keeps at each worker at least (src/parallel/scheduler.hpp)
 QUEUE_WHILE_REMAINING = 4  # one more for every this many per worker left to hand out
 QUEUED_SECONDS = 0.004  # DispatchPace::kQueuedSeconds: work a worker holds queued
@@ -106,6 +118,11 @@ def parse_arguments(argv):
     parser.add_argument("--samples", type=int, default=5, help="simulated generations per point, averaged (default 5)")
     parser.add_argument("--skip", type=int, default=1, help="generations left out of the calibration and the sweep (default 1)")
     parser.add_argument("--seed", type=int, default=1, help="seed of the cost resampling (default 1)")
+    parser.add_argument("--island-workers", type=int, default=None,
+                        help="islands of this many workers each from twice as many workers on (default: one population)")
+    parser.add_argument("--interval", type=int, default=10, help="islands: generations between migrations (default 10)")
+    parser.add_argument("--topology", choices=("ring", "full", "random"), default="ring",
+                        help="islands: where migrants go (default ring)")
     parser.add_argument("-o", "--output", default="scaling_model.png", help="PNG to write (default: scaling_model.png)")
     parser.add_argument("--table", default=None, help="also write the projection table to this TSV file")
     parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNG (default: 120)")
@@ -116,6 +133,8 @@ def parse_arguments(argv):
         value = getattr(arguments, name)
         if value is not None and value < 0:
             parser.error(f"--{name.replace('_', '-')} must be >= 0")
+    if (arguments.island_workers is not None and arguments.island_workers < 1) or arguments.interval < 1:
+        parser.error("--island-workers and --interval must be >= 1")
     if arguments.max_workers < 1 or arguments.samples < 1 or arguments.cost_cv < 0 or (arguments.in_flight is not None and arguments.in_flight < 1):
         parser.error("--max-workers, --samples and --in-flight must be >= 1, --cost-cv >= 0")
     return arguments
@@ -198,7 +217,7 @@ def limit_of(costs, workers, latency, serial, overhead=0.0):
     span = simulate_span(costs, workers, 0.0, overhead=overhead)
     bounds = {"work": work, "dispatch": len(costs) * latency, "serial": serial,
               "barrier": span if span > BARRIER_SLACK * work else 0.0}
-    return max(LIMITS, key=lambda k: bounds[k])
+    return max(bounds, key=lambda k: bounds[k])
 
 
 class Calibration:
@@ -277,8 +296,43 @@ def calibrate(path, skip=1):
                        overhead=overhead)
 
 
-def project(calibration, populations, worker_counts, samples=5, seed=1):
-    """Rows (dicts) population, workers, evaluations, time, speedup, efficiency, limit."""
+def migration_sources(island, islands, event, topology, rng):
+    """The islands that send to `island` after migration event `event` (as evolution/migration.cpp:
+    ring from the one before, full from every other, random one other drawn per event; the model
+    draws the random topology from its own stream)."""
+    if topology == "ring":
+        return [(island - 1) % islands]
+    if topology == "full":
+        return [k for k in range(islands) if k != island]
+    return [k for k in range(islands) if k != island and rng.integers(islands - 1) == 0] or \
+        [int((island + 1 + rng.integers(islands - 1)) % islands)]
+
+
+def archipelago_time(island_times, islands, interval, topology="ring", generations=ISLAND_GENERATIONS, rng=None):
+    """Mean generation time of `islands` islands over `generations` generations, each island's
+    generation lasting a draw from `island_times`. Island i breeds generation g + 1 when its
+    generation g is done and, where generation g - interval was a migration event (after
+    generation interval - 1, 2 interval - 1, ...), when its sources have finished that one (their
+    migrants leave right after it): Archipelago::exchange."""
+    rng = np.random.default_rng(0) if rng is None else rng
+    times = np.asarray(island_times, dtype=float)
+    end = np.zeros((islands, generations))
+    for g in range(generations):
+        event = g - 1 - interval  # the batches taken in before breeding generation g
+        for i in range(islands):
+            start = end[i, g - 1] if g > 0 else 0.0
+            if islands > 1 and event >= 0 and (event + 1) % interval == 0:
+                for source in migration_sources(i, islands, event, topology, rng):
+                    start = max(start, end[source, event])
+            end[i, g] = start + times[rng.integers(len(times))]
+    return float(end[:, -1].max()) / generations
+
+
+def project(calibration, populations, worker_counts, samples=5, seed=1, island_workers=None, interval=10,
+            topology="ring"):
+    """Rows (dicts) population, workers, islands, evaluations, time, speedup, efficiency, limit.
+    With `island_workers` w, worker counts of 2w and more are W // w islands of w workers (the
+    population per island; time is the archipelago's mean generation time)."""
     rows = []
     for population in populations:
         rng = np.random.default_rng([seed, population])
@@ -286,12 +340,26 @@ def project(calibration, populations, worker_counts, samples=5, seed=1):
         draws = [calibration.draw(count, rng) for _ in range(samples)]
         base = np.mean([calibration.time(c, 1) for c in draws])
         for workers in worker_counts:
-            time = np.mean([calibration.time(c, workers) for c in draws])
-            limits = [calibration.limit(c, workers) for c in draws]
-            speedup = base / time
-            rows.append({"population": population, "workers": workers, "evaluations": count,
-                         "time": float(time), "speedup": float(speedup), "efficiency": float(speedup / workers),
-                         "limit": max(set(limits), key=limits.count)})
+            islands = workers // island_workers if island_workers and workers >= 2 * island_workers else 1
+            per_island = workers // islands
+            # an archipelago draws each island's generations from more generations than a point
+            island_draws = draws + [calibration.draw(count, rng) for _ in range(ISLAND_SAMPLES - samples)] \
+                if islands > 1 else draws
+            times = [calibration.time(c, per_island) for c in island_draws]
+            limits = [calibration.limit(c, per_island) for c in draws]
+            limit = max(set(limits), key=limits.count)
+            time = float(np.mean(times))
+            if islands > 1:
+                # the islands' waits for each other, as a factor on the island's own time
+                pool = float(np.mean(times))
+                waits = archipelago_time(times, islands, interval, topology, rng=rng) / pool
+                time = float(np.mean(times[:samples])) * waits
+                if waits > MIGRATION_SLACK:
+                    limit = "migration"
+            speedup = islands * base / time
+            rows.append({"population": population, "workers": islands * per_island, "islands": islands,
+                         "evaluations": count, "time": float(time), "speedup": float(speedup),
+                         "efficiency": float(speedup / (islands * per_island)), "limit": limit})
     return rows
 
 
@@ -380,10 +448,11 @@ def main(argv=None):
     print(f"# {calibration.describe()}")
     # projection
     worker_counts = [2 ** k for k in range(int(np.log2(arguments.max_workers)) + 1)]
-    rows = project(calibration, arguments.populations, worker_counts, arguments.samples, arguments.seed)
-    lines = ["population\tworkers\tevaluations\tgeneration_seconds\tspeedup\tefficiency\tlimit"]
-    lines += [f"{r['population']}\t{r['workers']}\t{r['evaluations']}\t{r['time']:.6g}\t{r['speedup']:.4g}\t"
-              f"{r['efficiency']:.4f}\t{r['limit']}" for r in rows]
+    rows = project(calibration, arguments.populations, worker_counts, arguments.samples, arguments.seed,
+                   arguments.island_workers, arguments.interval, arguments.topology)
+    lines = ["population\tworkers\tislands\tevaluations\tgeneration_seconds\tspeedup\tefficiency\tlimit"]
+    lines += [f"{r['population']}\t{r['workers']}\t{r['islands']}\t{r['evaluations']}\t{r['time']:.6g}\t"
+              f"{r['speedup']:.4g}\t{r['efficiency']:.4f}\t{r['limit']}" for r in rows]
     print("\n".join(lines))
     if arguments.table:
         with open(arguments.table, "w") as handle:

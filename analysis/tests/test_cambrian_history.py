@@ -286,3 +286,17 @@ def test_a_reader_that_opened_it_between_generations_reads_on_when_the_writer_go
     finally:
         writer.stdin.close()
         writer.wait(timeout=60)
+
+
+# an island run's directory names each island's history (DIR/archipelago.ini); a plain run's
+# its own; a damaged index is an input error naming it
+def test_island_histories(tmp_path):
+    assert ch.island_histories(str(tmp_path)) == [(0, str(tmp_path / "history.h5"))]
+    (tmp_path / "archipelago.ini").write_text(
+        "[islands]\ncount = 2\ninterval = 1\n\n[island_0]\ndirectory = island_0\n\n"
+        "[island_1]\ndirectory = island_1\n")
+    assert ch.island_histories(str(tmp_path)) == [
+        (0, str(tmp_path / "island_0" / "history.h5")), (1, str(tmp_path / "island_1" / "history.h5"))]
+    (tmp_path / "archipelago.ini").write_text("[islands]\ncount = 3\n")
+    with pytest.raises(ch.InputFileError, match="archipelago.ini"):
+        ch.island_histories(str(tmp_path))

@@ -156,3 +156,41 @@ def test_deep_queues_hide_the_hand_outs_of_short_creatures():
     assert span == pytest.approx(work, rel=0.02)
     # held two at a time in the tail too: no round trip per creature at the end
     assert sm.simulate_span(costs, 2, 3e-5) <= sm.simulate_span(costs, 2, 3e-5, in_flight=2)
+
+
+# islands whose generations all last the same never wait for each other, whatever the topology
+@pytest.mark.parametrize("topology", ["ring", "full", "random"])
+def test_islands_of_equal_generations_do_not_wait(topology):
+    assert sm.archipelago_time([2.0], 8, 1, topology) == pytest.approx(2.0)
+    assert sm.archipelago_time([2.0], 8, 5, topology, generations=37) == pytest.approx(2.0)
+
+
+# uneven generations: the archipelago is slower than an island alone, more so the more often and
+# the more widely it trades, and never slower than lock-step (each generation the slowest island's)
+def test_migration_waits_grow_with_coupling():
+    times = [1.0, 1.0, 1.0, 3.0]
+    mean = np.mean(times)
+    ring_rare = sm.archipelago_time(times, 16, 10, "ring", rng=np.random.default_rng(3))
+    ring_often = sm.archipelago_time(times, 16, 1, "ring", rng=np.random.default_rng(3))
+    full_often = sm.archipelago_time(times, 16, 1, "full", rng=np.random.default_rng(3))
+    assert mean < ring_rare <= ring_often <= full_often <= 3.0
+    # the sources are as evolution/migration.cpp names them
+    assert sm.migration_sources(0, 4, 9, "ring", None) == [3]
+    assert sm.migration_sources(2, 4, 9, "full", None) == [0, 1, 3]
+    drawn = sm.migration_sources(1, 4, 9, "random", np.random.default_rng(1))
+    assert drawn and 1 not in drawn
+
+
+# islands of w workers: from 2w workers on the archipelago's throughput is K islands' (equal
+# costs: exactly K times one island's speedup), below that one population
+def test_projection_with_islands():
+    calibration = sm.Calibration(cost_mean=0.01, serial=0.001, latency=0.0, evaluated_share=1.0)
+    rows = sm.project(calibration, [64], [1, 4, 8, 16, 64], samples=2, island_workers=8)
+    by_workers = {r["workers"]: r for r in rows}
+    assert [by_workers[w]["islands"] for w in (1, 4, 8, 16, 64)] == [1, 1, 1, 2, 8]
+    assert by_workers[16]["speedup"] == pytest.approx(2 * by_workers[8]["speedup"])
+    assert by_workers[64]["speedup"] == pytest.approx(8 * by_workers[8]["speedup"])
+    assert by_workers[64]["efficiency"] == pytest.approx(by_workers[8]["efficiency"])
+    # one population of 64 on 64 workers is barrier-bound; 8 islands of 8 workers are not
+    alone = sm.project(calibration, [64], [1, 64], samples=2)
+    assert by_workers[64]["efficiency"] > alone[-1]["efficiency"]

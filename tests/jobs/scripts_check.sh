@@ -84,6 +84,26 @@ printf '#!/usr/bin/env bash\necho "fake-srun $*"\n' > "$work/bin/srun" && chmod 
 out=$(CAMBRIAN_LAUNCHER=srun sbatch_with 10:00 x.ini)
 grep -q "fake-srun --mpi=pmix --kill-on-bad-exit=1 $work/bin/cambrian evolve" <<< "$out" ||
   fail "srun launch line: $out"
+# islands: a count, one per node (Slurm's node count, the node file's hosts), an explicit
+# --islands.count wins, a bad value is exit 3; islands.sbatch and islands.pbs ask for one per node
+out=$(CAMBRIAN_ISLANDS=3 sbatch_with 10:00 x.ini)
+grep -q -- "--max-hours 0.083333 --islands.count 3$" <<< "$out" || fail "CAMBRIAN_ISLANDS=3: $out"
+out=$(CAMBRIAN_ISLANDS=nodes SLURM_JOB_NUM_NODES=4 sbatch_with 10:00 x.ini --seed 2)
+grep -q -- "--islands.count 4 --seed 2$" <<< "$out" || fail "CAMBRIAN_ISLANDS=nodes (4 nodes): $out"
+out=$(CAMBRIAN_ISLANDS=nodes sbatch_with 10:00 x.ini --islands.count 2)
+grep -q -- "--max-hours 0.083333 --islands.count 2$" <<< "$out" ||
+  fail "an explicit --islands.count should replace the script's: $out"
+CAMBRIAN_ISLANDS=many sbatch_with 10:00 x.ini > /dev/null 2>&1 && fail "CAMBRIAN_ISLANDS=many accepted"
+out=$(cd "$work" && env PATH="$work/bin:$PATH" FAKE_LEFT=10:00 SLURM_JOB_ID=42 SLURM_JOB_NAME=fake \
+  SLURM_JOB_NUM_NODES=3 SLURM_SUBMIT_DIR="$source" CAMBRIAN_EXE="$work/bin/cambrian" \
+  bash "$source/jobs/slurm/islands.sbatch" x.ini)
+grep -q -- "--islands.count 3$" <<< "$out" || fail "islands.sbatch on 3 nodes: $out"
+printf 'n1\nn1\nn2\nn2\nn3\nn3\n' > "$work/nodefile"
+out=$(cd "$work" && env PATH="$work/bin:$PATH" PBS_O_WORKDIR="$work" PBS_NODEFILE="$work/nodefile" \
+  PBS_JOBNAME=fake CAMBRIAN_EXE="$work/bin/cambrian" CAMBRIAN_ISLANDS=nodes \
+  bash "$source/jobs/pbs/evolve.pbs" --config x.ini)
+grep -q -- "fake-mpirun -np 6 --hostfile $work/nodefile $work/bin/cambrian evolve --config x.ini --out runs/fake --islands.count 3$" <<< "$out" ||
+  fail "evolve.pbs, one island per node of 3: $out"
 set +e
 (cd "$work" && CAMBRIAN_EXE="$work/bin/cambrian" bash "$source/jobs/slurm/evolve.sbatch" missing.ini) > /dev/null 2>&1
 rc=$?

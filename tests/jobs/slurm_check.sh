@@ -10,13 +10,15 @@
 #              continue from the checkpoint and stop before their --max-hours, until one
 #              completes the run and cancels the rest; the history is identical
 #              (analysis/compare_histories.py) to a straight run of the same experiment
+#   islands:   jobs/slurm/islands.sbatch, two islands, stopped by SIGUSR1 and continued by a
+#              second job: every island's digest is the straight run's
 # The daemons are stopped on exit, whatever happens; on failure their logs are printed.
 # Run by CTest (label slurm); fails (never skips) when Slurm cannot be started.
-# usage: slurm_check.sh CAMBRIAN SOURCE_DIR WORK_DIR [complete|srun|resume|all]
+# usage: slurm_check.sh CAMBRIAN SOURCE_DIR WORK_DIR [complete|srun|resume|islands|all]
 set -euo pipefail
 
 if [ "${1:-}" = --help ] || [ $# -lt 3 ]; then
-  sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'
   [ "${1:-}" = --help ] && exit 0 || exit 2
 fi
 cambrian=$(realpath "$1") source=$(realpath "$2") work=$3 what=${4:-all}
@@ -292,11 +294,45 @@ check_srun() {
   log "srun: job $id ran 2 ranks under srun --mpi=pmix, stopped by SIGUSR1 after $(generations_in "$work/runs/srun") generations"
 }
 
+# islands: jobs/slurm/islands.sbatch with two islands of 3 ranks (one node here, so the count
+# is given), stopped by SIGUSR1 and continued by a second job to the end; every island's digest
+# is that of a straight run of the same islands outside Slurm
+check_islands() {
+  write_config "$work/islands.ini" 40 15000
+  printf '[islands]\ncount = 2\ninterval = 2\nmigrants = 2\n' >> "$work/islands.ini"
+  mpirun -np 2 --oversubscribe "$cambrian" evolve --config "$work/islands.ini" \
+    --out "$work/islands_straight" --quiet > "$work/islands_straight.txt" 2>&1 &
+  local straight_pid=$! id
+  id=$(CAMBRIAN_ISLANDS=2 sbatch --parsable -J islands --ntasks=3 --time=5 \
+         "$source/jobs/slurm/islands.sbatch" --config islands.ini)
+  wait_for 60 "job $id to reach generation 3" grep -q '^gen 3/40 ' "$work/islands-$id.out"
+  scancel --signal=USR1 --batch "$id" || fail "scancel --signal=USR1 --batch $id"
+  expect_completed "$id"
+  grep -q -- '--islands.count 2' "$work/islands-$id.out" || fail "islands: no --islands.count 2 in the launch line"
+  grep -q 'cambrian evolve: 2 islands of' "$work/islands-$id.out" || fail "islands: not two islands"
+  grep -q 'stopped cleanly; the next job' "$work/islands-$id.out" || fail "islands: job $id did not stop cleanly"
+  local id2
+  id2=$(CAMBRIAN_ISLANDS=2 sbatch --parsable -J islands --ntasks=3 --time=5 \
+          "$source/jobs/slurm/islands.sbatch" --config islands.ini)
+  expect_completed "$id2" 120
+  grep -q 'continuing from runs/islands/island_\*/checkpoint.h5' "$work/islands-$id2.out" ||
+    fail "islands: job $id2 did not say it continues"
+  grep -q 'the run is complete' "$work/islands-$id2.out" || fail "islands: job $id2 did not complete the run"
+  grep -q 'resuming from runs/islands/island_1/checkpoint.h5' "$work/runs/islands/island_1/evolve.log" ||
+    fail "islands: island 1 did not resume (its evolve.log)"
+  wait "$straight_pid" || { cat "$work/islands_straight.txt"; fail "the straight island run failed"; }
+  diff <(grep -e '^island ' -e '^digest ' "$work/islands_straight.txt") \
+    <(grep -e '^island ' -e '^digest ' "$work/islands-$id2.out") ||
+    fail "islands: the continued islands differ from the straight run's"
+  log "islands: job $id stopped by SIGUSR1, job $id2 continued both islands to the straight run's digests"
+}
+
 case $what in
   complete) check_complete ;;
   srun) check_srun ;;
   resume) check_resume ;;
-  all) check_complete; check_srun; check_resume ;;
-  *) fail "unknown check '$what' (complete, srun, resume, all)" ;;
+  islands) check_islands ;;
+  all) check_complete; check_srun; check_resume; check_islands ;;
+  *) fail "unknown check '$what' (complete, srun, resume, islands, all)" ;;
 esac
 log "OK"
