@@ -303,7 +303,7 @@ check_islands() {
   mpirun -np 2 --oversubscribe "$cambrian" evolve --config "$work/islands.ini" \
     --out "$work/islands_straight" --quiet > "$work/islands_straight.txt" 2>&1 &
   local straight_pid=$! id
-  id=$(CAMBRIAN_ISLANDS=2 sbatch --parsable -J islands --ntasks=3 --time=5 \
+  id=$(CAMBRIAN_ISLANDS=2 sbatch --parsable -J islands --nodes=1 --ntasks-per-node=3 --time=5 \
          "$source/jobs/slurm/islands.sbatch" --config islands.ini)
   wait_for 60 "job $id to reach generation 3" grep -q '^gen 3/40 ' "$work/islands-$id.out"
   scancel --signal=USR1 --batch "$id" || fail "scancel --signal=USR1 --batch $id"
@@ -312,7 +312,7 @@ check_islands() {
   grep -q 'cambrian evolve: 2 islands of' "$work/islands-$id.out" || fail "islands: not two islands"
   grep -q 'stopped cleanly; the next job' "$work/islands-$id.out" || fail "islands: job $id did not stop cleanly"
   local id2
-  id2=$(CAMBRIAN_ISLANDS=2 sbatch --parsable -J islands --ntasks=3 --time=5 \
+  id2=$(CAMBRIAN_ISLANDS=2 sbatch --parsable -J islands --nodes=1 --ntasks-per-node=3 --time=5 \
           "$source/jobs/slurm/islands.sbatch" --config islands.ini)
   expect_completed "$id2" 120
   grep -q 'continuing from runs/islands/island_\*/checkpoint.h5' "$work/islands-$id2.out" ||
