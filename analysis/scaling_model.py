@@ -471,7 +471,10 @@ def main(argv=None):
         for m in measured:
             print(f"{m['workers']}\t{m['measured']:.6g}\t{m['model']:.6g}\t{m['error']:+.3f}\t"
                   f"{m['measured_speedup']:.4g}\t{m['model_speedup']:.4g}")
-    plot(rows, measured, arguments.output, "scaling model: " + os.path.basename(calibration.source), arguments.dpi)
+    title = "scaling model: " + os.path.basename(calibration.source)
+    if arguments.island_workers:
+        title += f", islands of {arguments.island_workers} workers (every {arguments.interval}, {arguments.topology})"
+    plot(rows, measured, arguments.output, title, arguments.dpi)
     print(f"# wrote {arguments.output}")
     return ch.EXIT_OK
 
