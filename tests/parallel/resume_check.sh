@@ -93,6 +93,26 @@ same() {
   diff <(cut -f1-10 "$work/$a/generations.tsv") <(cut -f1-10 "$work/$b/generations.tsv")
 }
 
+# the run in DIR/stopped, slow, sent SIGUSR1 once generation 2 is done (mpiexec forwards it to
+# every rank): it must exit 0; its output in stopped.first.txt, its errors in stopped.err
+stopped_by_signal() {
+  (job_exec "$np" --config "$work/run.ini" --out "$work/stopped" --run.quiet false \
+    > "$work/stopped.first.txt" 2> "$work/stopped.err") &
+  local pid=$! rc
+  for _ in $(seq 1 600); do
+    grep -q '^gen 2/' "$work/stopped.first.txt" 2> /dev/null && break
+    sleep 0.05
+  done
+  kill -USR1 "$pid"
+  set +e
+  wait "$pid"
+  rc=$?
+  set -e
+  cat "$work/stopped.first.txt"
+  echo "stopped run exit $rc"
+  [ "$rc" -eq 0 ]
+}
+
 # a run killed at POINT, then resumed (at RESUME_NP ranks) until done: NAME.txt holds the end
 kill_and_resume() {
   local name=$1 point=$2 expect_from=$3 resume_np=${4:-$np}
@@ -144,21 +164,7 @@ case $mode in
     # slower generations, so the signal lands mid-run; SIGUSR1 to the job (mpiexec forwards it)
     sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 20000/' "$work/run.ini"
     straight slow_straight
-    (job_exec "$np" --config "$work/run.ini" --out "$work/stopped" --run.quiet false \
-      > "$work/stopped.first.txt" 2> "$work/stopped.err") &
-    pid=$!
-    for _ in $(seq 1 600); do
-      grep -q '^gen 2/' "$work/stopped.first.txt" 2> /dev/null && break
-      sleep 0.05
-    done
-    kill -USR1 "$pid"
-    set +e
-    wait "$pid"
-    rc=$?
-    set -e
-    cat "$work/stopped.first.txt"
-    echo "stopped run exit $rc"
-    [ "$rc" -eq 0 ]
+    stopped_by_signal
     grep -q "stopped by SIGUSR1 after .* run the same command again" "$work/stopped.first.txt"
     grep -q '^digest_so_far ' "$work/stopped.first.txt"
     [ -s "$work/stopped/checkpoint.h5" ]
@@ -291,21 +297,7 @@ INI
     # SIGUSR1 to the job: every island stops cleanly, the same command finishes the run
     sed -i 's/^synthetic_cost_us = 300/synthetic_cost_us = 20000/' "$work/run.ini"
     straight slow_straight
-    (job_exec "$np" --config "$work/run.ini" --out "$work/stopped" --run.quiet false \
-      > "$work/stopped.first.txt" 2> "$work/stopped.err") &
-    pid=$!
-    for _ in $(seq 1 600); do
-      grep -q '^gen 2/' "$work/stopped.first.txt" 2> /dev/null && break
-      sleep 0.05
-    done
-    kill -USR1 "$pid"
-    set +e
-    wait "$pid"
-    rc=$?
-    set -e
-    cat "$work/stopped.first.txt"
-    echo "stopped run exit $rc"
-    [ "$rc" -eq 0 ]
+    stopped_by_signal
     grep -q "stopped .* run the same command again" "$work/stopped.first.txt"
     job "$np" --config "$work/run.ini" --out "$work/stopped" > "$work/stopped.txt"
     same_islands slow_straight stopped
