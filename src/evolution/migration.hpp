@@ -41,6 +41,11 @@ struct MigrationSettings {
 class MigrationExchange {
  public:
   virtual ~MigrationExchange() = default;
+  /// Once, before the first exchange: the generation this island's run starts at (0: afresh,
+  /// else where its checkpoint continues) and its output directory (for messages). Throws
+  /// Error(checkpoint) where it starts afresh while another island continues: the batches it
+  /// would need first were dropped by its neighbours once its own lost checkpoint held them.
+  virtual void start(std::uint64_t next_generation, const std::string& directory) = 0;
   /// After each evaluated generation, before the next is bred: sends this island's emigrants
   /// where due and returns the immigrants the next generation takes in (placeImmigrants), or
   /// null when the run must stop (a stop while waiting for them, another island stopped).

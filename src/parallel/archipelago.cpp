@@ -151,6 +151,18 @@ void Archipelago::resume(const std::vector<std::uint8_t>& state) {
   }
 }
 
+void Archipelago::start(std::uint64_t next_generation, const std::string& directory) {
+  const std::uint64_t furthest = breeders_.allReduceMax(next_generation);
+  if (next_generation == 0 && furthest > 0)
+    throw Error(ExitCode::checkpoint,
+                "islands: island " + std::to_string(breeders_.rank()) + " (" + directory +
+                    ") has no checkpoint to continue from while another island continues from "
+                    "generation " +
+                    std::to_string(furthest) +
+                    " (the migrants it would take in first are gone): put its checkpoint back, "
+                    "or start every island over with --fresh");
+}
+
 void Archipelago::close() {
   // the final count to every other island
   for (int other = 0; other < breeders_.size(); ++other) {

@@ -99,6 +99,8 @@ class EvolutionRun {
 
   RunResult run() {
     openOutput();
+    if (run_.migrations)
+      run_.migrations->start(start_, run_.out_dir);
     if (!epochs_.empty() && start_ < total_)
       announceEpoch();
     std::string stop_reason;

@@ -17,7 +17,8 @@
 #                 its own last checkpoint, the batches its neighbours may have lost sent again),
 #                 stopped by SIGUSR1 and continued, resumed at another rank count, and extended
 #                 by raising evolution.generations: every island's digest and history as the
-#                 straight run's
+#                 straight run's; an island whose directory is lost cannot start afresh beside
+#                 islands that continue (exit 6 naming it)
 #   disk_full:    the output on a small tmpfs that fills at eleven points of the run (history
 #                 appends, checkpoints): exit 5 naming the file, the system's reason and the way
 #                 on; with room again the same command finishes identical to the straight run.
@@ -288,6 +289,22 @@ INI
     islands_killed mid_write checkpoint_write:3
     # at another rank count (as many islands need as many ranks)
     islands_killed other_ranks evaluation:4 $((np + 1))
+    # an island whose directory is gone cannot start afresh beside islands that continue: exit 6
+    # (checkpoint) naming it, the other islands' checkpoints untouched
+    set +e
+    job "$np" --config "$work/run.ini" --out "$work/lost" --run.test_kill_at evaluation:3 \
+      > /dev/null 2>&1
+    set -e
+    rm -rf "$work/lost/island_1"
+    cp "$work/lost/island_0/checkpoint.h5" "$work/lost_island_0.h5"
+    set +e
+    job "$np" --config "$work/run.ini" --out "$work/lost" > "$work/lost.txt" 2> "$work/lost.err"
+    rc=$?
+    set -e
+    echo "an island's directory gone: exit $rc, $(grep -m1 'no checkpoint' "$work/lost.err" || true)"
+    [ "$rc" -eq 6 ]
+    grep -q "island 1 ($work/lost/island_1) has no checkpoint to continue from" "$work/lost.err"
+    cmp "$work/lost/island_0/checkpoint.h5" "$work/lost_island_0.h5"
     # a finished run extended: the batches of its last generations were kept for it
     sed -i 's/^generations = 6/generations = 4/' "$work/run.ini"
     job "$np" --config "$work/run.ini" --out "$work/extended" > "$work/extended.first.txt"
