@@ -8,6 +8,7 @@
 
 #include "cambrian/encodings.hpp"
 #include "cambrian/error.hpp"
+
 #include "core/bytes.hpp"
 #include "encodings/directed_graph/genome.hpp"
 
