@@ -43,8 +43,9 @@ class MigrationExchange {
   virtual ~MigrationExchange() = default;
   /// Once, before the first exchange: the generation this island's run starts at (0: afresh,
   /// else where its checkpoint continues) and its output directory (for messages). Throws
-  /// Error(checkpoint) where it starts afresh while another island continues: the batches it
-  /// would need first were dropped by its neighbours once its own lost checkpoint held them.
+  /// Error(checkpoint) where another island would wait for ever: it starts from an older
+  /// checkpoint than the one it told this island of (put back by hand, or its directory lost),
+  /// and this island dropped batches that one needs.
   virtual void start(std::uint64_t next_generation, const std::string& directory) = 0;
   /// After each evaluated generation, before the next is bred: sends this island's emigrants
   /// where due and returns the immigrants the next generation takes in (placeImmigrants), or

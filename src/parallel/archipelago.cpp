@@ -7,6 +7,8 @@
 #include "core/bytes.hpp"
 #include "core/outcome_bytes.hpp"
 
+#include <algorithm>
+
 namespace cambrian {
 
 std::vector<std::uint8_t> encodeMigrants(std::uint64_t event, int source,
@@ -152,15 +154,34 @@ void Archipelago::resume(const std::vector<std::uint8_t>& state) {
 }
 
 void Archipelago::start(std::uint64_t next_generation, const std::string& directory) {
-  const std::uint64_t furthest = breeders_.allReduceMax(next_generation);
-  if (next_generation == 0 && furthest > 0)
-    throw Error(ExitCode::checkpoint,
-                "islands: island " + std::to_string(breeders_.rank()) + " (" + directory +
-                    ") has no checkpoint to continue from while another island continues from "
-                    "generation " +
-                    std::to_string(furthest) +
-                    " (the migrants it would take in first are gone): put its checkpoint back, "
-                    "or start every island over with --fresh");
+  // where every island starts: the batches each target will wait for from here on must be in
+  // this island's outbox, or made again (a resume's first exchange sends its last generation's)
+  const std::vector<std::uint64_t> starts = breeders_.allGather(next_generation);
+  const int island = breeders_.rank();
+  const auto interval = static_cast<std::uint64_t>(settings_.interval);
+  const std::uint64_t made_again_from = next_generation == 0 ? 0 : next_generation - 1;
+  for (int target = 0; target < breeders_.size(); ++target) {
+    const std::uint64_t from = starts[static_cast<std::size_t>(target)];
+    if (target == island)
+      continue;
+    // its first exchange (after generation from - 1) takes in event from - 1 - interval
+    const std::uint64_t first_needed = from > interval ? from - 1 - interval : 0;
+    for (std::uint64_t event = first_needed; event < made_again_from; ++event) {
+      if (!migratesAfter(settings_, event) || outbox_.count({event, target}))
+        continue;
+      const std::vector<int> targets = migrationTargets(settings_, island, event, run_seed_);
+      if (std::find(targets.begin(), targets.end(), target) != targets.end())
+        throw Error(ExitCode::checkpoint,
+                    "islands: island " + std::to_string(target) + " continues from generation " +
+                        std::to_string(from) + ", but island " + std::to_string(island) + " (" +
+                        directory + ", from generation " + std::to_string(next_generation) +
+                        ") no longer holds the migrants it sent it after generation " +
+                        std::to_string(event) + ": island " + std::to_string(target) +
+                        "'s checkpoint is older than the one it told the others of (a "
+                        "checkpoint put back by hand, or its directory lost?); put its newest "
+                        "checkpoint back, or start every island over with --fresh");
+    }
+  }
 }
 
 void Archipelago::close() {

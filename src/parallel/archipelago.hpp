@@ -35,7 +35,8 @@ class Archipelago : public MigrationExchange {
   /// (in source order, each source's best first; empty where none are due). Null where it had to
   /// wait and a stop was requested or another island said it stopped: this island stops too,
   /// before breeding (nothing it waits for would come).
-  /// Every island learns whether another continues (a collective over the breeding ranks).
+  /// Every island learns where the others start (a collective over the breeding ranks) and
+  /// checks that it holds every batch they will wait for from it.
   void start(std::uint64_t next_generation, const std::string& directory) override;
   std::optional<std::vector<Individual>> exchange(const Population& evaluated) override;
   /// The outbox: every batch sent that its target may still need.

@@ -228,6 +228,14 @@ std::uint64_t MpiContext::allReduceMax(std::uint64_t value) {
   return result;
 }
 
+std::vector<std::uint64_t> MpiContext::allGather(std::uint64_t value) {
+  std::vector<std::uint64_t> values(static_cast<std::size_t>(size_));
+  check(MPI_Allgather(&value, 1, MPI_UINT64_T, values.data(), 1, MPI_UINT64_T,
+                      communicator_->comm),
+        "MPI_Allgather", rank_);
+  return values;
+}
+
 void MpiContext::abort(ExitCode code, const std::string& message) const {
   // one write, so that mpirun's own abort notice cannot land inside the line
   std::cerr << ("cambrian evolve: rank " + std::to_string(rank_) + ": " + message + "\n")

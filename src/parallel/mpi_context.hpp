@@ -77,6 +77,8 @@ class MpiContext {
   int allReduceMax(int value);
   /// The maximum of `value` over all ranks (collective).
   std::uint64_t allReduceMax(std::uint64_t value);
+  /// Every rank's `value`, in rank order (collective).
+  std::vector<std::uint64_t> allGather(std::uint64_t value);
 
   /// Prints "cambrian evolve: rank R: message" to stderr and calls MPI_Abort with `code`, which
   /// ends every rank of the job (of every context) with that exit code. Never returns.

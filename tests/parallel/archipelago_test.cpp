@@ -2,7 +2,7 @@
 // (archipelago_np_N; one island per rank, each on a communicator of its own per test): batches
 // travel along the ring and arrive one interval later, a target's checkpoint trims the sender's
 // outbox, a resume sends the outbox again and a batch that arrives twice is taken in once, an
-// island without a checkpoint beside one that continues is refused, bad checkpoint bytes are an
+// island whose migrants a neighbour no longer holds is refused, bad checkpoint bytes are an
 // error.
 #include "parallel/archipelago.hpp"
 
@@ -171,26 +171,49 @@ TEST(Archipelago, AResumeSendsTheOutboxAgainAndARepeatedBatchIsTakenInOnce) {
   EXPECT_EQ(outboxOf(after.checkpointState()).size(), 3u);
 }
 
-TEST(Archipelago, AnIslandStartingAfreshBesideOneThatContinuesIsRefused) {
+TEST(Archipelago, AnIslandWhoseMigrantsAreGoneIsRefused) {
   if (world->size() < 2)
     GTEST_SKIP() << "needs two islands";
+  const int islands = world->size(), island = world->rank();
+  std::vector<std::uint8_t> state;
+  {
+    // generations 0..4; after a checkpoint of 0..3 every island drops events 0 and 1
+    std::unique_ptr<MpiContext> breeders = world->split(0);
+    Archipelago before(*breeders, ring(islands, 1), 7);
+    for (std::uint64_t g = 0; g < 4; ++g)
+      ASSERT_TRUE(before.exchange(generationOf(island, g)));
+    before.checkpointed(4);
+    ASSERT_TRUE(before.exchange(generationOf(island, 4)));
+    before.close();
+    state = before.checkpointState();
+  }
   std::unique_ptr<MpiContext> breeders = world->split(0);
-  Archipelago archipelago(*breeders, ring(breeders->size(), 1), 7);
-  if (breeders->rank() == 0) {
-    EXPECT_NO_THROW(archipelago.start(5, "out/island_0"));
-  } else {
+  Archipelago after(*breeders, ring(islands, 1), 7);
+  after.resume(state);
+  // every island from its newest checkpoint (generation 5), or island 1 from generation 3
+  // (needing event 1 first: still there, no), or island 1 afresh (needing event 0: gone)
+  EXPECT_NO_THROW(after.start(5, "out"));
+  auto refusal = [&](std::uint64_t island_1_from) {
     try {
-      archipelago.start(0, "out/island_1");
-      ADD_FAILURE() << "no error";
+      after.start(island == 1 ? island_1_from : 5, "out/island_" + std::to_string(island));
     } catch (const Error& e) {
       EXPECT_EQ(e.code(), ExitCode::checkpoint);
-      EXPECT_NE(std::string(e.what()).find("out/island_1"), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find("generation 5"), std::string::npos) << e.what();
+      return std::string(e.what());
     }
+    return std::string();
+  };
+  // only island 0, island 1's source, misses what it would take in
+  std::string message = refusal(2);
+  EXPECT_EQ(message.empty(), island != 0) << message;
+  if (island == 0) {
+    EXPECT_NE(message.find("island 1 continues from generation 2"), std::string::npos) << message;
+    EXPECT_NE(message.find("island 0 (out/island_0"), std::string::npos) << message;
+    EXPECT_NE(message.find("after generation 0"), std::string::npos) << message;
   }
-  // every island afresh, or every island continuing: no error
-  EXPECT_NO_THROW(archipelago.start(0, "out"));
-  EXPECT_NO_THROW(archipelago.start(static_cast<std::uint64_t>(breeders->rank()) + 1, "out"));
+  EXPECT_EQ(refusal(0).empty(), island != 0);
+  // from generation 4 it first takes in event 2: kept
+  EXPECT_TRUE(refusal(4).empty());
+  after.close();
 }
 
 TEST(Archipelago, BadCheckpointBytesAreACheckpointError) {

@@ -17,8 +17,8 @@
 #                 its own last checkpoint, the batches its neighbours may have lost sent again),
 #                 stopped by SIGUSR1 and continued, resumed at another rank count, and extended
 #                 by raising evolution.generations: every island's digest and history as the
-#                 straight run's; an island whose directory is lost cannot start afresh beside
-#                 islands that continue (exit 6 naming it)
+#                 straight run's; an island whose older checkpoint was put back, so that a
+#                 neighbour no longer holds the migrants it needs, is refused (exit 6 naming it)
 #   disk_full:    the output on a small tmpfs that fills at eleven points of the run (history
 #                 appends, checkpoints): exit 5 naming the file, the system's reason and the way
 #                 on; with room again the same command finishes identical to the straight run.
@@ -289,22 +289,26 @@ INI
     islands_killed mid_write checkpoint_write:3
     # at another rank count (as many islands need as many ranks)
     islands_killed other_ranks evaluation:4 $((np + 1))
-    # an island whose directory is gone cannot start afresh beside islands that continue: exit 6
-    # (checkpoint) naming it, the other islands' checkpoints untouched
+    # an island's checkpoint put back by hand to an older one: its neighbour no longer holds the
+    # migrants it would take in first, so the job is refused (exit 6, naming both) instead of
+    # waiting for them for ever; the other island's checkpoint untouched
+    sed -i 's/^generations = 6/generations = 3/' "$work/run.ini"
+    job "$np" --config "$work/run.ini" --out "$work/restored" > /dev/null
+    cp "$work/restored/island_1/checkpoint.h5" "$work/restored_island_1_at_3.h5"
+    sed -i 's/^generations = 3/generations = 6/' "$work/run.ini"
+    job "$np" --config "$work/run.ini" --out "$work/restored" > /dev/null
+    cp "$work/restored_island_1_at_3.h5" "$work/restored/island_1/checkpoint.h5"
+    cp "$work/restored/island_0/checkpoint.h5" "$work/restored_island_0.h5"
     set +e
-    job "$np" --config "$work/run.ini" --out "$work/lost" --run.test_kill_at evaluation:3 \
-      > /dev/null 2>&1
-    set -e
-    rm -rf "$work/lost/island_1"
-    cp "$work/lost/island_0/checkpoint.h5" "$work/lost_island_0.h5"
-    set +e
-    job "$np" --config "$work/run.ini" --out "$work/lost" > "$work/lost.txt" 2> "$work/lost.err"
+    job "$np" --config "$work/run.ini" --out "$work/restored" --evolution.generations 8 \
+      > "$work/restored.txt" 2> "$work/restored.err"
     rc=$?
     set -e
-    echo "an island's directory gone: exit $rc, $(grep -m1 'no checkpoint' "$work/lost.err" || true)"
+    echo "an older checkpoint put back: exit $rc, $(grep -m1 'no longer holds' "$work/restored.err" || true)"
     [ "$rc" -eq 6 ]
-    grep -q "island 1 ($work/lost/island_1) has no checkpoint to continue from" "$work/lost.err"
-    cmp "$work/lost/island_0/checkpoint.h5" "$work/lost_island_0.h5"
+    grep -q "island 1 continues from generation 3, but island 0 ($work/restored/island_0" \
+      "$work/restored.err"
+    cmp "$work/restored/island_0/checkpoint.h5" "$work/restored_island_0.h5"
     # a finished run extended: the batches of its last generations were kept for it
     sed -i 's/^generations = 6/generations = 4/' "$work/run.ini"
     job "$np" --config "$work/run.ini" --out "$work/extended" > "$work/extended.first.txt"
