@@ -230,8 +230,7 @@ std::uint64_t MpiContext::allReduceMax(std::uint64_t value) {
 
 std::vector<std::uint64_t> MpiContext::allGather(std::uint64_t value) {
   std::vector<std::uint64_t> values(static_cast<std::size_t>(size_));
-  check(MPI_Allgather(&value, 1, MPI_UINT64_T, values.data(), 1, MPI_UINT64_T,
-                      communicator_->comm),
+  check(MPI_Allgather(&value, 1, MPI_UINT64_T, values.data(), 1, MPI_UINT64_T, communicator_->comm),
         "MPI_Allgather", rank_);
   return values;
 }
