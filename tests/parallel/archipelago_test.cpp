@@ -17,9 +17,10 @@
 #include <memory>
 
 namespace cambrian {
-namespace {
 
-MpiContext* world = nullptr;  // the job's context (main)
+extern MpiContext* world;  // the job's context (mpi_test_main.cpp)
+
+namespace {
 
 // island `island`'s generation g: three individuals, ids 1000 island + 10 g + k, fitness k (so
 // its best is k = 2)
@@ -244,12 +245,3 @@ TEST(Archipelago, BadCheckpointBytesAreACheckpointError) {
 
 }  // namespace
 }  // namespace cambrian
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  cambrian::MpiContext world(&argc, &argv);
-  cambrian::world = &world;
-  // every rank runs every test; a failure on any rank fails the job
-  int failed = RUN_ALL_TESTS() != 0 ? 1 : 0;
-  return world.allReduceMax(failed);
-}

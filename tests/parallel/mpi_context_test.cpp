@@ -8,9 +8,10 @@
 #include <memory>
 
 namespace cambrian {
-namespace {
 
-MpiContext* world = nullptr;  // the job's context (main)
+extern MpiContext* world;  // the job's context (mpi_test_main.cpp)
+
+namespace {
 
 TEST(MpiContext, SplitHoldsTheRanksOfOneColorInOrder) {
   const int color = world->rank() % 2;
@@ -51,12 +52,3 @@ TEST(MpiContext, MessagesAndReductionsStayInTheirContext) {
 
 }  // namespace
 }  // namespace cambrian
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  cambrian::MpiContext world(&argc, &argv);
-  cambrian::world = &world;
-  // every rank runs every test; a failure on any rank fails the job
-  int failed = RUN_ALL_TESTS() != 0 ? 1 : 0;
-  return world.allReduceMax(failed);
-}
