@@ -114,17 +114,23 @@ stopped_by_signal() {
   [ "$rc" -eq 0 ]
 }
 
-# a run killed at POINT, then resumed (at RESUME_NP ranks) until done: NAME.txt holds the end
-kill_and_resume() {
-  local name=$1 point=$2 expect_from=$3 resume_np=${4:-$np}
+# the run in DIR/NAME SIGKILLed at POINT (run.test_kill_at): it must die of it
+killed_at() {
+  local name=$1 point=$2 rc
   set +e
   job "$np" --config "$work/run.ini" --out "$work/$name" --run.test_kill_at "$point" \
     > "$work/$name.killed.txt" 2> "$work/$name.killed.err"
-  local rc=$?
+  rc=$?
   set -e
   echo "$point: killed run exit $rc"
   [ "$rc" -ne 0 ]
   grep -q "run.test_kill_at $point: SIGKILL" "$work/$name.killed.err"
+}
+
+# a run killed at POINT, then resumed (at RESUME_NP ranks) until done: NAME.txt holds the end
+kill_and_resume() {
+  local name=$1 point=$2 expect_from=$3 resume_np=${4:-$np}
+  killed_at "$name" "$point"
   job "$resume_np" --config "$work/run.ini" --out "$work/$name" > "$work/$name.txt"
   # nothing before the last checkpoint lost: it resumes from the expected generation
   grep "resuming from" "$work/$name.txt"
@@ -266,14 +272,7 @@ INI
     }
     islands_killed() {
       local name=$1 point=$2 resume_np=${3:-$np}
-      set +e
-      job "$np" --config "$work/run.ini" --out "$work/$name" --run.test_kill_at "$point" \
-        > "$work/$name.killed.txt" 2> "$work/$name.killed.err"
-      local rc=$?
-      set -e
-      echo "$point: killed run exit $rc"
-      [ "$rc" -ne 0 ]
-      grep -q "run.test_kill_at $point: SIGKILL" "$work/$name.killed.err"
+      killed_at "$name" "$point"
       job "$resume_np" --config "$work/run.ini" --out "$work/$name" > "$work/$name.txt"
       grep "resuming from" "$work/$name.txt"
       # the other islands' lines in their own logs
