@@ -8,6 +8,8 @@
 #include "core/outcome_bytes.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <thread>
 
 namespace cambrian {
 
@@ -153,14 +155,16 @@ void Archipelago::resume(const std::vector<std::uint8_t>& state) {
   }
 }
 
-void Archipelago::start(std::uint64_t next_generation, const std::string& directory) {
-  // where every island starts: the batches each target will wait for from here on must be in
-  // this island's outbox, or made again (a resume's first exchange sends its last generation's)
-  const std::vector<std::uint64_t> starts = breeders_.allGather(next_generation);
+std::string Archipelago::missingFor(const std::vector<std::uint64_t>& starts,
+                                    const std::string& directory) const {
+  // the batches each target will wait for from here on must be in this island's outbox, or made
+  // again (a resume's first exchange sends its last generation's)
   const int island = breeders_.rank();
+  const std::uint64_t next_generation = starts.at(static_cast<std::size_t>(island));
   const auto interval = static_cast<std::uint64_t>(settings_.interval);
   const std::uint64_t made_again_from = next_generation == 0 ? 0 : next_generation - 1;
-  for (int target = 0; target < breeders_.size(); ++target) {
+  std::string problem;
+  for (int target = 0; target < breeders_.size() && problem.empty(); ++target) {
     const std::uint64_t from = starts[static_cast<std::size_t>(target)];
     if (target == island)
       continue;
@@ -170,18 +174,33 @@ void Archipelago::start(std::uint64_t next_generation, const std::string& direct
       if (!migratesAfter(settings_, event) || outbox_.count({event, target}))
         continue;
       const std::vector<int> targets = migrationTargets(settings_, island, event, run_seed_);
-      if (std::find(targets.begin(), targets.end(), target) != targets.end())
-        throw Error(ExitCode::checkpoint,
-                    "islands: island " + std::to_string(target) + " continues from generation " +
-                        std::to_string(from) + ", but island " + std::to_string(island) + " (" +
-                        directory + ", from generation " + std::to_string(next_generation) +
-                        ") no longer holds the migrants it sent it after generation " +
-                        std::to_string(event) + ": island " + std::to_string(target) +
-                        "'s checkpoint is older than the one it told the others of (a "
-                        "checkpoint put back by hand, or its directory lost?); put its newest "
-                        "checkpoint back, or start every island over with --fresh");
+      if (std::find(targets.begin(), targets.end(), target) != targets.end()) {
+        problem = "islands: island " + std::to_string(target) + " continues from generation " +
+                  std::to_string(from) + ", but island " + std::to_string(island) + " (" +
+                  directory + ", from generation " + std::to_string(next_generation) +
+                  ") no longer holds the migrants it sent it after generation " +
+                  std::to_string(event) + ": island " + std::to_string(target) +
+                  "'s checkpoint is older than the one it told the others of (a "
+                  "checkpoint put back by hand, or its directory lost?); put its newest "
+                  "checkpoint back, or start every island over with --fresh";
+        break;
+      }
     }
   }
+  return problem;
+}
+
+void Archipelago::start(std::uint64_t next_generation, const std::string& directory) {
+  const std::string problem = missingFor(breeders_.allGather(next_generation), directory);
+  // every island refuses before any runs a generation: the one that found it says why, the
+  // others wait for its abort to end the job (and say so themselves if it never came)
+  if (breeders_.allReduceMax(problem.empty() ? 0 : 1) == 0)
+    return;
+  if (!problem.empty())
+    throw Error(ExitCode::checkpoint, problem);
+  std::this_thread::sleep_for(std::chrono::seconds(10));
+  throw Error(ExitCode::checkpoint,
+              "islands: another island cannot continue (its message says why)");
 }
 
 void Archipelago::close() {

@@ -36,8 +36,14 @@ class Archipelago : public MigrationExchange {
   /// wait and a stop was requested or another island said it stopped: this island stops too,
   /// before breeding (nothing it waits for would come).
   /// Every island learns where the others start (a collective over the breeding ranks) and
-  /// checks that it holds every batch they will wait for from it.
+  /// checks that it holds every batch they will wait for from it (missingFor); where one does
+  /// not, every island throws before running a generation (that one saying why).
   void start(std::uint64_t next_generation, const std::string& directory) override;
+  /// Why an island starting where `starts` says (by island) would wait for ever for a batch this
+  /// island no longer holds or makes again (the message names both and the generation), or ""
+  /// when none would; `directory` is this island's (for the message).
+  std::string missingFor(const std::vector<std::uint64_t>& starts,
+                         const std::string& directory) const;
   std::optional<std::vector<Individual>> exchange(const Population& evaluated) override;
   /// The outbox: every batch sent that its target may still need.
   std::vector<std::uint8_t> checkpointState() const override;

@@ -290,14 +290,16 @@ INI
     islands_killed other_ranks evaluation:4 $((np + 1))
     # an island's checkpoint put back by hand to an older one: its neighbour no longer holds the
     # migrants it would take in first, so the job is refused (exit 6, naming both) instead of
-    # waiting for them for ever; the other island's checkpoint untouched
+    # waiting for them for ever, before any island runs a generation
     sed -i 's/^generations = 6/generations = 3/' "$work/run.ini"
     job "$np" --config "$work/run.ini" --out "$work/restored" > /dev/null
     cp "$work/restored/island_1/checkpoint.h5" "$work/restored_island_1_at_3.h5"
     sed -i 's/^generations = 3/generations = 6/' "$work/run.ini"
     job "$np" --config "$work/run.ini" --out "$work/restored" > /dev/null
     cp "$work/restored_island_1_at_3.h5" "$work/restored/island_1/checkpoint.h5"
-    cp "$work/restored/island_0/checkpoint.h5" "$work/restored_island_0.h5"
+    for k in $(seq 0 $((islands - 1))); do
+      cp "$work/restored/island_$k/checkpoint.h5" "$work/restored_island_$k.h5"
+    done
     set +e
     job "$np" --config "$work/run.ini" --out "$work/restored" --evolution.generations 8 \
       > "$work/restored.txt" 2> "$work/restored.err"
@@ -307,7 +309,10 @@ INI
     [ "$rc" -eq 6 ]
     grep -q "island 1 continues from generation 3, but island 0 ($work/restored/island_0" \
       "$work/restored.err"
-    cmp "$work/restored/island_0/checkpoint.h5" "$work/restored_island_0.h5"
+    # no island ran a generation: every checkpoint as it was
+    for k in $(seq 0 $((islands - 1))); do
+      cmp "$work/restored/island_$k/checkpoint.h5" "$work/restored_island_$k.h5"
+    done
     # a finished run extended: the batches of its last generations were kept for it
     sed -i 's/^generations = 6/generations = 4/' "$work/run.ini"
     job "$np" --config "$work/run.ini" --out "$work/extended" > "$work/extended.first.txt"
