@@ -56,6 +56,18 @@ struct EvolveSettings {
     run.declareSettings(schema);
     dispatch.declareSettings(schema);
     worker.declareTestingSettings(schema);
+    // the rules across sections
+    schema.addCheck([this] {
+      if (evolution.mode == EvolutionMode::steady_state && islands.islands > 1)
+        throw ConfigError("islands.count = " + std::to_string(islands.islands) +
+                          " with evolution.mode = steady_state: islands trade at generation "
+                          "ends, which a steady state has not; use one island or "
+                          "evolution.mode = generational");
+      if (!run.arrival_order.empty() && evolution.mode != EvolutionMode::steady_state)
+        throw ConfigError("run.arrival_order = " + run.arrival_order +
+                          ": only a steady state (evolution.mode = steady_state) follows a "
+                          "recorded order of results");
+    });
   }
 };
 

@@ -12,10 +12,7 @@
 
 namespace cambrian {
 
-namespace {
-
-// the selection method a mutation_selection other than `same` names
-SelectionMethod selectionMethodOf(MutationSelection choice) {
+SelectionMethod selectionMethodFor(MutationSelection choice) {
   switch (choice) {
     case MutationSelection::truncation:
       return SelectionMethod::truncation;
@@ -31,8 +28,6 @@ SelectionMethod selectionMethodOf(MutationSelection choice) {
   }
   return SelectionMethod::rank;
 }
-
-}  // namespace
 
 BreedingPlan planBreeding(const EvolutionSettings& s) {
   // elites first, then the offspring shares of the rest
@@ -211,7 +206,7 @@ Population Breeder::nextGeneration(const Population& evaluated) {
                           selection_rng);
   } else {
     SelectionSettings own = settings_.selection;
-    own.method = selectionMethodOf(settings_.mutation_selection);
+    own.method = selectionMethodFor(settings_.mutation_selection);
     Rng mutation_rng(settings_.seed, RngPurpose::selection, g, 1);
     picks = selectParents(ranked_fitness, mutation_picks, own, mutation_rng);
     Rng sexual_rng(settings_.seed, RngPurpose::selection, g, 0);
@@ -226,9 +221,6 @@ Population Breeder::nextGeneration(const Population& evaluated) {
 
   // offspring slot i uses the stream (seed, variation, g, i)
   const int bred = plan_.mutations + plan_.crossovers + plan_.grafts;
-  const double mutation_rate = scaledMutationRate(encoding_, settings_.mutation_rate, 1);
-  const double post_chance = settings_.post_crossover_mutation_chance;
-  const double post_rate = scaledMutationRate(encoding_, settings_.post_crossover_mutation_rate, 1);
   for (int i = 0; i < bred; ++i) {
     const Individual* a = &pickParent();
     const Individual* b = i < plan_.mutations ? nullptr : &pickParent();
@@ -237,23 +229,31 @@ Population Breeder::nextGeneration(const Population& evaluated) {
     const Origin origin = i < plan_.mutations                      ? Origin::mutation
                           : i < plan_.mutations + plan_.crossovers ? Origin::crossover
                                                                    : Origin::graft;
-    next.individuals.push_back(offspring(
-        g, static_cast<std::uint64_t>(i), origin, std::move(parents),
-        [&encoding = encoding_, origin, first = a->genome, second = b ? b->genome : Genotype{},
-         mutation_rate, post_chance, post_rate](Rng& rng, int) {
-          // asexual: copy and mutate each parameter with mutation_rate (or the encoding's own)
-          if (origin == Origin::mutation)
-            return encoding.mutate(first, mutation_rate, rng);
-          // sexual: crossover or graft, then maybe the weaker mutation (Chaumont 5.7)
-          const Variation variation =
-              origin == Origin::crossover ? Variation::crossover : Variation::graft;
-          Genotype child = encoding.combine(variation, first, second, rng);
-          if (rng.bernoulli(post_chance))
-            child = encoding.mutate(child, post_rate, rng);
-          return child;
-        }));
+    next.individuals.push_back(
+        offspring(g, static_cast<std::uint64_t>(i), origin, std::move(parents),
+                  varyParents(origin, a->genome, b ? b->genome : Genotype{})));
   }
   return next;
+}
+
+std::function<Genotype(Rng&, int)> Breeder::varyParents(Origin origin, Genotype first,
+                                                        Genotype second) const {
+  const double mutation_rate = scaledMutationRate(encoding_, settings_.mutation_rate, 1);
+  const double post_chance = settings_.post_crossover_mutation_chance;
+  const double post_rate = scaledMutationRate(encoding_, settings_.post_crossover_mutation_rate, 1);
+  return [&encoding = encoding_, origin, first = std::move(first), second = std::move(second),
+          mutation_rate, post_chance, post_rate](Rng& rng, int) {
+    // asexual: copy and mutate each parameter with mutation_rate (or the encoding's own)
+    if (origin == Origin::mutation)
+      return encoding.mutate(first, mutation_rate, rng);
+    // sexual: crossover or graft, then maybe the weaker mutation (Chaumont 5.7)
+    const Variation variation =
+        origin == Origin::crossover ? Variation::crossover : Variation::graft;
+    Genotype child = encoding.combine(variation, first, second, rng);
+    if (rng.bernoulli(post_chance))
+      child = encoding.mutate(child, post_rate, rng);
+    return child;
+  };
 }
 
 }  // namespace cambrian

@@ -36,6 +36,9 @@ BreedingPlan planBreeding(const EvolutionSettings& settings);
 /// own chance per gene (Encoding::scalesOwnMutation), else min(1, rate x multiplier).
 double scaledMutationRate(const Encoding& encoding, double rate, double multiplier);
 
+/// The selection method a mutation_selection other than `same` names (`same`: rank, unused).
+SelectionMethod selectionMethodFor(MutationSelection choice);
+
 /// Whether a new genome makes a body that may be born (Chaumont et al. 5.5).
 using ViabilityCheck = std::function<bool(const Genotype&)>;
 
@@ -63,6 +66,14 @@ class Breeder {
   /// Throws std::invalid_argument when `evaluated` is not fully evaluated.
   Population nextGeneration(const Population& evaluated);
 
+  /// Steady-state evolution (evolution.mode = steady_state): one child of the evaluated
+  /// `members` as they are now, with the next id. Its operator (by the offspring shares) and
+  /// parents (by evolution.selection, or mutation_selection) come from the stream (seed,
+  /// selection, id, kSteadyStream), its genome (made when first read) from (seed, variation, id,
+  /// kSteadyStream); `bred_after` is recorded on it, its generation is the members'. A pure
+  /// function of the members' genomes and fitnesses and the id. Implemented in steady_state.cpp.
+  Individual steadyChild(const Population& members, std::uint64_t bred_after);
+
   /// New individuals that fail `check` are redrawn — same parents, the next draws of the same
   /// random stream — up to `max_attempts` times in all (Chaumont et al. 5.5). Elites and seed
   /// genomes are never redrawn. No check (the default) accepts everything.
@@ -85,6 +96,10 @@ class Breeder {
   Population restartFromBest(const Population& evaluated);
   // the wwd scheme's next generation (wwd_breeding.cpp)
   Population breedWwd(const Population& evaluated);
+  // how the generational scheme and the steady state make a child of `origin` (mutation,
+  // crossover, graft) from its parents' genomes (`second` unused for mutation)
+  std::function<Genotype(Rng&, int)> varyParents(Origin origin, Genotype first,
+                                                 Genotype second) const;
   // a copy of `parent` in `generation`, with its outcome (its genome did not change)
   Individual eliteCopy(const Individual& parent, std::uint64_t generation);
   // a new individual of generation `g` in offspring slot `slot`, its genome deferred: when first

@@ -72,6 +72,40 @@ void EvolutionSettings::declareSettings(SettingsSchema& s) {
   probability("evolution.post_crossover_mutation_rate", e.post_crossover_mutation_rate,
               "per-parameter rate of that mutation");
 
+  // generations or a steady state
+  s.addChoice("evolution.mode", e.mode,
+              {{"generational", EvolutionMode::generational},
+               {"steady_state", EvolutionMode::steady_state}},
+              "generational (breed a generation, evaluate all of it, then breed the next) | "
+              "steady_state (no generation barrier: each result is taken in as it arrives, "
+              "replacing a weaker member, and a child bred from the members then is sent out at "
+              "once; a generation is evolution.population results; docs/steady-state.md)");
+  s.add("evolution.replacement_tournament", e.replacement_tournament,
+        "steady_state: members drawn for a reverse tournament; a new result replaces the worst "
+        "of them when it is at least as fit")
+      .require(
+          [&e] {
+            return e.replacement_tournament >= 1 && e.replacement_tournament <= e.population;
+          },
+          "must be in 1..population");
+  s.addCheck([&e] {
+    if (e.mode != EvolutionMode::steady_state)
+      return;
+    auto refuse = [](const std::string& what) {
+      throw ConfigError("evolution.mode = steady_state: " + what +
+                        " needs whole generations; use evolution.mode = generational");
+    };
+    if (e.scheme != BreedingScheme::generational)
+      refuse(std::string("evolution.scheme = ") +
+             (e.scheme == BreedingScheme::reaper ? "reaper" : "wwd"));
+    if (e.batch_generations > 0)
+      refuse("evolution.batch_generations = " + std::to_string(e.batch_generations));
+    if (!e.ranking.empty())
+      refuse("evolution.ranking (competitive ranking within a generation)");
+    if (!e.epochs.empty())
+      refuse("evolution.epochs");
+  });
+
   // the breeding scheme, and the reaper's shares (Minemonics)
   s.addChoice("evolution.scheme", e.scheme,
               {{"generational", BreedingScheme::generational},

@@ -44,6 +44,13 @@ enum class BreedingScheme : std::uint8_t {
   wwd,           ///< Walking with Dinosaurs: elites kept, the rest bred from an elite and a breeder
 };
 
+/// Whether the run waits for whole generations (evolution.mode).
+enum class EvolutionMode : std::uint8_t {
+  generational,  ///< breed a generation, evaluate all of it, breed the next (every scheme)
+  steady_state,  ///< no generations: each result is taken in at once and a child sent out
+                 ///< (steady_state.hpp); a "generation" is `population` results taken in
+};
+
 /// The kinds of survivor the reaper makes, in slot order: kept (elites), then one per operator.
 enum class ReaperShare : std::uint8_t {
   elite,
@@ -87,6 +94,10 @@ struct WwdSettings {
 /// Everything the generational Sims / Chaumont scheme, the reaper and the wwd scheme need. The
 /// encoding's own operator settings (structural mutation rates) are the encoding's.
 struct EvolutionSettings {
+  EvolutionMode mode = EvolutionMode::generational;
+  /// steady_state: contestants of the reverse tournament that picks the member a new result
+  /// may replace (it does when it is at least as fit)
+  int replacement_tournament = 2;
   BreedingScheme scheme = BreedingScheme::generational;
   ReaperSettings reaper;            ///< evolution.scheme = reaper
   WwdSettings wwd;                  ///< evolution.scheme = wwd

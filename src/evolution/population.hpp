@@ -50,6 +50,10 @@ struct Individual {
   bool evaluated = false;   ///< true once outcome holds a result for this genome
   double eval_seconds = 0;  ///< wall time of its evaluation; 0 when copied
   int worker_rank = -1;     ///< rank that evaluated it; -1 when copied or not yet evaluated
+  /// steady-state evolution: the results taken in before it was bred (its parents were drawn
+  /// from the members then); with the order of the history's rows, what a replay repeats.
+  /// 0 in generational runs.
+  std::uint64_t bred_after = 0;
 
   /// The fitness used for selection: the outcome's, or kWorstFitness before evaluation and for
   /// a non-finite value (so ranking is a total order).

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <future>
 #include <iostream>
+#include <limits>
 #include <numeric>
 #include <utility>
 
@@ -149,6 +150,18 @@ EvaluationSpan InProcessEvaluator::evaluate(Population& population, std::uint64_
   }
   span.span_seconds = since(start);
   return span;
+}
+
+void InProcessEvaluator::submit(const Individual& individual, std::uint64_t run_seed) {
+  queue_.push_back(makeRequest(individual, run_seed, 0));
+}
+
+StreamedResult InProcessEvaluator::take() {
+  if (queue_.empty())
+    throw std::logic_error("InProcessEvaluator::take: nothing submitted");
+  EvalResult result = evaluateRequest(queue_.front(), settings_, 0, std::cerr);
+  queue_.pop_front();
+  return {result.id, std::move(result.outcome), 0, 0};
 }
 
 int DispatchPace::held(double mean_seconds, std::size_t remaining, int workers) const {
@@ -331,6 +344,74 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
   if (span.evaluations > 0)
     last_mean_seconds_ = span.busy_seconds / static_cast<double>(span.evaluations);
   return span;
+}
+
+double MpiScheduler::streamMean() const {
+  return stream_taken_ > 0 ? stream_busy_seconds_ / static_cast<double>(stream_taken_)
+                           : last_mean_seconds_;
+}
+
+std::size_t MpiScheduler::streamDepth() const {
+  // as deep as a generation's middle: plenty left to hand out
+  const int held = pace_.held(streamMean(), std::numeric_limits<std::size_t>::max() / 2, workers());
+  return static_cast<std::size_t>(workers()) * static_cast<std::size_t>(std::max(1, held));
+}
+
+void MpiScheduler::submit(const Individual& individual, std::uint64_t run_seed) {
+  stream_held_.resize(static_cast<std::size_t>(mpi_.size()), 0);
+  // the worker holding the fewest (ties: the lowest rank)
+  int worker = 1;
+  for (int w = 2; w < mpi_.size(); ++w) {
+    if (stream_held_[static_cast<std::size_t>(w)] < stream_held_[static_cast<std::size_t>(worker)])
+      worker = w;
+  }
+  individual.genome.bytes();
+  mpi_.post(worker, Tag::request, encodeRequest(makeRequest(individual, run_seed, 0)));
+  streamed_.insert(individual.id);
+  ++stream_held_[static_cast<std::size_t>(worker)];
+}
+
+StreamedResult MpiScheduler::take() {
+  if (streamed_.empty())
+    throw std::logic_error("MpiScheduler::take: nothing submitted");
+  Message message;
+  for (;;) {
+    mpi_.completePosted();
+    if (mpi_.tryReceive(Tag::result, message))
+      break;
+    // every worker with one queued behind the one it evaluates: sleep a quarter of that work;
+    // else a worker may be waiting, so look often
+    const int least = *std::min_element(stream_held_.begin() + 1, stream_held_.end());
+    const long relaxed = pace_.relaxedMicros(streamMean(), least);
+    if (relaxed > 0)
+      stream_backoff_.range(relaxed, relaxed);
+    else
+      stream_backoff_.range(Backoff::kMin,
+                            std::min(Backoff::quarterOf(streamMean()), Backoff::kUrgent));
+    stream_backoff_.wait();
+  }
+  auto start = Clock::now();
+  stream_backoff_.reset();
+  EvalResult result;
+  try {
+    result = decodeResult(message.bytes);
+  } catch (const Error& e) {
+    throw Error(ExitCode::mpi,
+                "malformed result from rank " + std::to_string(message.source) + ": " + e.what());
+  }
+  if (streamed_.erase(result.id) == 0)
+    throw Error(ExitCode::mpi, "rank " + std::to_string(message.source) +
+                                   " answered for creature " + std::to_string(result.id) +
+                                   " that was not asked for");
+  --stream_held_[static_cast<std::size_t>(message.source)];
+  stream_busy_seconds_ += result.outcome.wall_seconds;
+  ++stream_taken_;
+  return {result.id, std::move(result.outcome), message.source, since(start)};
+}
+
+void MpiScheduler::discardStream() {
+  while (!streamed_.empty())
+    take();
 }
 
 void MpiScheduler::stopWorkers() {

@@ -7,8 +7,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 namespace cambrian {
@@ -56,11 +58,36 @@ std::vector<std::size_t> schedulingOrder(const Population& population,
                                          const DispatchSettings& dispatch = {},
                                          std::uint64_t run_seed = 0, double expected_seconds = 0);
 
+/// One result of a stream of creatures (steady-state evolution).
+struct StreamedResult {
+  std::uint64_t id = 0;
+  Outcome outcome;
+  int rank = 0;                 ///< the rank that evaluated it
+  double dispatch_seconds = 0;  ///< rank 0 taking it in (receiving, decoding), waits left out
+};
+
 /// Evaluates every individual of a population that has no outcome yet; outcomes are stored by
-/// id, never by arrival order.
+/// id, never by arrival order. Or, for steady-state evolution, a stream of creatures: each
+/// submitted one at a time and taken back as it is done.
 class PopulationEvaluator {
  public:
   virtual ~PopulationEvaluator() = default;
+
+  /// Steady state: hands out one creature (its genome made here when still deferred), to be
+  /// evaluated as soon as a worker is free. Its request is what evaluate() would send.
+  virtual void submit(const Individual& individual, std::uint64_t run_seed) = 0;
+  /// Steady state: the next result done (waits for one; never spinning). Throws std::logic_error
+  /// when nothing is handed out, Error(mpi) on a malformed or unexpected result.
+  virtual StreamedResult take() = 0;
+  /// Steady state: creatures submitted and not yet taken.
+  virtual std::size_t streaming() const = 0;
+  /// Steady state: how many creatures to keep handed out so that no worker waits — for the
+  /// evaluations taken so far (DispatchPace: a few milliseconds of work per worker).
+  virtual std::size_t streamDepth() const = 0;
+  /// Steady state, stopping: forgets every creature handed out (their results, where workers
+  /// evaluate them, are waited for and dropped, so no message is left unreceived).
+  virtual void discardStream() = 0;
+
   /// Fills outcome, evaluated, eval_seconds and worker_rank of each unevaluated individual.
   /// `meanwhile` (when set) is called once while the workers evaluate — rank 0's own work that
   /// need not hold them up, such as writing the previous generation to the history — or, with no
@@ -97,10 +124,18 @@ class InProcessEvaluator : public PopulationEvaluator {
   EvaluationSpan evaluate(Population& population, std::uint64_t run_seed,
                           const std::function<void()>& meanwhile = {}) override;
   int workers() const override { return 1; }
+  /// Queues the request; take() evaluates the oldest (so results come in submission order).
+  void submit(const Individual& individual, std::uint64_t run_seed) override;
+  StreamedResult take() override;
+  std::size_t streaming() const override { return queue_.size(); }
+  /// One: a child is bred after each result.
+  std::size_t streamDepth() const override { return 1; }
+  void discardStream() override { queue_.clear(); }
 
  private:
   WorkerSettings settings_;
   DispatchSettings dispatch_;
+  std::deque<EvalRequest> queue_;  // submitted, not yet evaluated
 };
 
 /// How many creatures a worker holds and how long rank 0 may sleep, from the expected
@@ -154,6 +189,15 @@ class MpiScheduler : public PopulationEvaluator {
   EvaluationSpan evaluate(Population& population, std::uint64_t run_seed,
                           const std::function<void()>& meanwhile = {}) override;
   int workers() const override;
+  /// Posts the request to the worker holding the fewest creatures (ties: the lowest rank).
+  void submit(const Individual& individual, std::uint64_t run_seed) override;
+  /// Waits by probe + a sleep sized by the work the workers hold (as evaluate()).
+  StreamedResult take() override;
+  std::size_t streaming() const override { return streamed_.size(); }
+  /// Workers x DispatchPace::held for the mean evaluation so far (the last generation's, or the
+  /// stream's own once it has results).
+  std::size_t streamDepth() const override;
+  void discardStream() override;
   /// Sends the stop message to every worker (once; later calls do nothing).
   void stopWorkers();
 
@@ -163,6 +207,13 @@ class MpiScheduler : public PopulationEvaluator {
   DispatchPace pace_;
   double last_mean_seconds_ = 0;  // the mean evaluation of the last generation (0: none yet)
   bool stopped_ = false;
+  // the stream (steady state): ids out, creatures each worker holds, evaluations taken
+  std::unordered_set<std::uint64_t> streamed_;
+  std::vector<int> stream_held_;
+  double stream_busy_seconds_ = 0;
+  std::size_t stream_taken_ = 0;
+  Backoff stream_backoff_;
+  double streamMean() const;
 };
 
 }  // namespace cambrian

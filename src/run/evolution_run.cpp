@@ -13,8 +13,10 @@
 #include "evolution/migration.hpp"
 #include "evolution/outcome_reuse.hpp"
 #include "evolution/statistics.hpp"
+#include "evolution/steady_state.hpp"
 #include "evolution/wwd_breeding.hpp"
 #include "physics/physics_settings.hpp"
+#include "run/arrival_order.hpp"
 #include "run/resume.hpp"
 #include "run/tables.hpp"
 #include "store/checkpoint.hpp"
@@ -24,7 +26,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -88,7 +92,8 @@ class EvolutionRun {
         run_(run),
         out_(out),
         breeder_(settings, encoding),
-        total_(static_cast<std::uint64_t>(std::max(settings.generations, 0))) {
+        total_(static_cast<std::uint64_t>(std::max(settings.generations, 0))),
+        steady_(settings.mode == EvolutionMode::steady_state) {
     setTestKillPoint(run.test_kill_at);
     for (const std::string& text : settings.ranking)
       ranking_.push_back(parseRankedMeasure(text, "evolution.ranking"));
@@ -98,6 +103,9 @@ class EvolutionRun {
   }
 
   RunResult run() {
+    // a steady state's recorded order, read before the output directory is touched
+    if (steady_ && !run_.arrival_order.empty())
+      arrivals_ = readArrivalRecord(run_.arrival_order, historyAttributes());
     openOutput();
     if (run_.migrations)
       run_.migrations->start(start_, run_.out_dir);
@@ -105,7 +113,9 @@ class EvolutionRun {
       announceEpoch();
     std::string stop_reason;
     std::uint64_t g = start_;
-    for (; g < total_; ++g) {
+    if (steady_)
+      g = runSteadyState(stop_reason);
+    for (; !steady_ && g < total_; ++g) {
       // a clean stop: the last generation written and checkpointed, then out
       stop_reason = stopReason(g);
       if (!stop_reason.empty())
@@ -266,7 +276,13 @@ class EvolutionRun {
     state.next_id = next_id;
     state.digest = digest_.value();
     state.rank_count = run_.rank_count;
-    state.population = *last_;
+    // a steady state: the members and, unevaluated, the creatures handed out
+    if (steady_) {
+      state.steady_state = true;
+      state.population = steadyCheckpointPopulation();
+    } else {
+      state.population = *last_;
+    }
     if (run_.migrations)
       state.migrations = run_.migrations->checkpointState();
     writeCheckpoint(run_.out_dir, state, [&](const std::string& stage) {
@@ -304,7 +320,7 @@ class EvolutionRun {
     digest_.add(*last_);
     retired_.reset();
     GenerationRecord& record = result_.generations[pending_->record];
-    record.distinct_genomes = distinctGenomes(*last_);
+    record.distinct_genomes = distinctGenomes(steady_ ? members_ : *last_);
     if (!history_) {
       pending_.reset();
       return;
@@ -459,6 +475,189 @@ class EvolutionRun {
       announceEpoch();
   }
 
+  // steady state (evolution.mode = steady_state): no generation barrier. Each result is taken
+  // in as it arrives (takeIntoMembers) and answered with a child bred from the members then
+  // (Breeder::steadyChild), so the workers always hold DispatchPace's few milliseconds of work;
+  // breeding starts once the first generation is in. Every `population` results taken in make
+  // a "generation": its rows (in the order taken in) go to the history, the members' statistics
+  // to its row, and a checkpoint (the members and the creatures in flight) when one is due.
+  // Returns the generations done; `stop_reason` says why it stopped early.
+  std::uint64_t runSteadyState(std::string& stop_reason) {
+    const auto P = static_cast<std::uint64_t>(settings_.population);
+    const std::uint64_t births = total_ * P;
+    // to hand out: the first generation, or a resume's creatures that were in flight
+    std::deque<Individual>& unsent = steady_unsent_;
+    if (!last_) {
+      for (Individual& individual : breeder_.initialPopulation(seeds_).individuals)
+        unsent.push_back(std::move(individual));
+    } else {
+      for (Individual& individual : last_->individuals) {
+        if (individual.evaluated)
+          members_.individuals.push_back(std::move(individual));
+        else
+          unsent.push_back(std::move(individual));
+      }
+      last_.reset();
+    }
+    std::uint64_t taken = start_ * P;
+    members_.generation = start_;
+    if (start_ >= total_)
+      return start_;
+    stop_reason = stopReason(start_);
+    if (!stop_reason.empty())
+      return start_;  // nothing run: the checkpoint holds what it held
+    generation_start_ = Clock::now();
+    generation_cpu_start_ = processCpuSeconds();
+    const bool live = run_.liveProgress();
+    const std::size_t most_in_flight = std::max<std::uint64_t>(1, P / 2);
+
+    std::map<std::uint64_t, Individual>& in_flight = steady_in_flight_;
+    std::map<std::uint64_t, StreamedResult> early;  // arrived ahead of the recorded order
+    std::vector<Individual> rows;                   // this generation's, in the order taken in
+    double busy = 0, dispatch = 0;
+    auto handOut = [&](Individual individual) {
+      auto start = Clock::now();
+      evaluator_.submit(individual, settings_.seed);
+      dispatch += secondsSince(start);
+      const std::uint64_t id = individual.id;
+      in_flight.emplace(id, std::move(individual));
+    };
+    for (;;) {
+      // creatures out: the recorded ones when they were bred, else to the evaluator's depth
+      const std::size_t depth = std::min(evaluator_.streamDepth(), most_in_flight);
+      auto mayHandOut = [&](std::uint64_t id, std::uint64_t bred_after) {
+        std::uint64_t recorded = 0;
+        if (arrivals_ && arrivals_->bredAfter(id, recorded))
+          return recorded <= bred_after;
+        return in_flight.size() < depth;
+      };
+      while (!unsent.empty() && mayHandOut(unsent.front().id, taken)) {
+        handOut(std::move(unsent.front()));
+        unsent.pop_front();
+      }
+      while (unsent.empty() && members_.individuals.size() == P && breeder_.nextId() < births &&
+             mayHandOut(breeder_.nextId(), taken))
+        handOut(breeder_.steadyChild(members_, taken));
+      if (in_flight.empty())
+        break;
+
+      // the next result: as it arrives, or the one the record took in next
+      StreamedResult result = nextResult(taken, in_flight, early);
+      dispatch += result.dispatch_seconds;
+      auto found = in_flight.find(result.id);
+      Individual individual = std::move(found->second);
+      in_flight.erase(found);
+      individual.outcome = std::move(result.outcome);
+      individual.evaluated = true;
+      individual.eval_seconds = individual.outcome.wall_seconds;
+      individual.worker_rank = result.rank;
+      individual.generation = taken / P;
+      busy += individual.eval_seconds;
+      rows.push_back(individual);
+      takeIntoMembers(members_, std::move(individual), settings_);
+      ++taken;
+      const std::uint64_t g = (taken - 1) / P;
+      if (live)
+        liveLine(g, static_cast<std::size_t>(taken - g * P), static_cast<std::size_t>(P));
+      // testing aid: a kill in the middle of a generation
+      if (taken - g * P == (P + 1) / 2)
+        testKillPoint("evaluation", g);
+      if (taken % P != 0)
+        continue;
+
+      // a generation's worth taken in: its record, history rows and checkpoint
+      if (live)
+        clearLiveLine();
+      members_.generation = g + 1;
+      const bool last = g + 1 == total_;
+      if (!last)
+        stop_reason = stopReason(g + 1);
+      endSteadyGeneration(g, std::move(rows), busy, dispatch, last || !stop_reason.empty());
+      rows.clear();
+      busy = dispatch = 0;
+      if (last || !stop_reason.empty()) {
+        // a stop: the creatures in flight are in the checkpoint; their results are not waited for
+        if (!last)
+          evaluator_.discardStream();
+        return g + 1;
+      }
+    }
+    return taken / P;
+  }
+
+  // the next result of a steady state: the next to arrive, or where the run follows a record,
+  // the one it took in as result `taken` (those arriving ahead of it kept until their turn)
+  StreamedResult nextResult(std::uint64_t taken,
+                            const std::map<std::uint64_t, Individual>& in_flight,
+                            std::map<std::uint64_t, StreamedResult>& early) {
+    std::uint64_t expected = 0;
+    if (!arrivals_ || !arrivals_->idAt(taken, expected)) {
+      if (!early.empty()) {
+        StreamedResult result = std::move(early.begin()->second);
+        early.erase(early.begin());
+        return result;
+      }
+      return evaluator_.take();
+    }
+    if (!in_flight.count(expected))
+      throw Error(ExitCode::config,
+                  "run.arrival_order = " + arrivals_->path + ": its row " + std::to_string(taken) +
+                      " takes in individual " + std::to_string(expected) +
+                      ", which this run has not bred by then: the history is of another run");
+    while (!early.count(expected)) {
+      StreamedResult result = evaluator_.take();
+      const std::uint64_t id = result.id;
+      early.emplace(id, std::move(result));
+    }
+    StreamedResult result = std::move(early.at(expected));
+    early.erase(expected);
+    return result;
+  }
+
+  // a steady state's generation g (`rows` in the order taken in) ends: its record, history rows,
+  // digest and, when due or `final_write`, checkpoint
+  void endSteadyGeneration(std::uint64_t g, std::vector<Individual> rows, double busy,
+                           double dispatch, bool final_write) {
+    GenerationRecord record;
+    record.generation = g;
+    record.stats = computeStats(members_);
+    record.evaluations = rows.size();
+    record.workers = evaluator_.workers();
+    record.evaluation_span_seconds = secondsSince(generation_start_);
+    record.rank0_dispatch_seconds = dispatch;
+    record.worker_busy_seconds = busy;
+    record.worker_idle_seconds =
+        std::max(0.0, record.workers * record.evaluation_span_seconds - busy);
+    record.fitness_deviation = mutationScale(settings_, members_).deviation;
+    record.mutation_multiplier = 1;
+    for (const Individual& row : rows)
+      result_.individuals.push_back(tableRecord(row));
+    closeTimes(record);
+    last_ = Population{g, std::move(rows)};
+    result_.generations.push_back(record);
+    walls_.push_back(record.wall_seconds);
+    pending_ = Pending{result_.generations.size() - 1, breeder_.nextId()};
+    // the next generation's time starts here, its history append and checkpoint included
+    generation_start_ = Clock::now();
+    generation_cpu_start_ = processCpuSeconds();
+    finishPending(final_write);
+    progress(g, result_.generations.back(), 0);
+  }
+
+  // a steady state's checkpoint: the members and the creatures in flight, in id order
+  Population steadyCheckpointPopulation() const {
+    Population population;
+    population.generation = members_.generation == 0 ? 0 : members_.generation - 1;
+    population.individuals = members_.individuals;
+    for (const auto& [id, individual] : steady_in_flight_)
+      population.individuals.push_back(individual);
+    for (const Individual& individual : steady_unsent_)
+      population.individuals.push_back(individual);
+    std::sort(population.individuals.begin(), population.individuals.end(),
+              [](const Individual& a, const Individual& b) { return a.id < b.id; });
+    return population;
+  }
+
   // "epoch 2/3 (RANKING@CONDITION) from generation 11" (generations counted from 1, as above)
   void announceEpoch() const {
     if (run_.quiet)
@@ -532,6 +731,11 @@ class EvolutionRun {
   std::vector<Epoch> epochs_;           // evolution.epochs, parsed (empty: one epoch, ranking_)
   EpochPlace epoch_place_;              // the epoch the next generation is rated in
   const std::uint64_t total_;
+  const bool steady_;                                     // evolution.mode = steady_state
+  std::optional<ArrivalRecord> arrivals_;                 // run.arrival_order, read
+  Population members_;                                    // a steady state's members, in id order
+  std::map<std::uint64_t, Individual> steady_in_flight_;  // handed out, not yet taken in
+  std::deque<Individual> steady_unsent_;                  // to hand out
   double cpu_start_ = processCpuSeconds();
   Clock::time_point run_start_ = Clock::now();
 

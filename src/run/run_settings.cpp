@@ -51,6 +51,12 @@ void RunSettings::declareSettings(SettingsSchema& s) {
         "most 10 s")
       .require([&r] { return r.lock_wait >= 0 && std::isfinite(r.lock_wait); }, "must be >= 0")
       .runOnly();
+  s.add("run.arrival_order", r.arrival_order,
+        "evolution.mode = steady_state: a history.h5 of this run's settings whose order of "
+        "results taken in (its rows) and each child's bred_after this run follows, so that it "
+        "repeats that run bit for bit at any rank count; past the recorded rows it goes on as "
+        "results arrive (empty: as they arrive)")
+      .runOnly();
   s.add("run.test_kill_at", r.test_kill_at,
         "testing: rank 0 SIGKILLs itself at POINT:GENERATION, POINT one of evaluation, history, "
         "checkpoint_write, checkpoint_rename, checkpoint_done")

@@ -31,6 +31,9 @@ struct RunSettings {
   std::string test_kill_at;       ///< testing: "POINT:GENERATION" where rank 0 SIGKILLs itself
   bool reuse_outcomes = true;     ///< copies of an evaluated genome take its outcome
   double lock_wait = 60;          ///< seconds to wait for DIR/run.lock held by a run that has ended
+  /// steady state: a history whose recorded order of results this run follows (empty: results
+  /// are taken in as they arrive)
+  std::string arrival_order;
 
   // handed over by the command (not settings)
   ViabilityCheck viable;  ///< birth test for new individuals (none: accept all), rank 0 only

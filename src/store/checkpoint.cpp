@@ -123,6 +123,15 @@ void hashColumn(Fnv1a& hash, const ByteParts& bytes) {
     hash.add(part->data(), part->size());
 }
 
+// steady-state: every individual's bred_after, in row order
+std::vector<std::uint64_t> bredAfterColumn(const Population& population) {
+  std::vector<std::uint64_t> column;
+  column.reserve(population.individuals.size());
+  for (const Individual& i : population.individuals)
+    column.push_back(i.bred_after);
+  return column;
+}
+
 // the hash of the scalar state and every column (detects corruption the HDF5 layer misses)
 template <class C, class ForEach>
 std::uint64_t stateHash(const CheckpointState& s, const C& columns, ForEach forEach) {
@@ -136,6 +145,9 @@ std::uint64_t stateHash(const CheckpointState& s, const C& columns, ForEach forE
   // islands only (a checkpoint without them hashes as before)
   if (!s.migrations.empty())
     hashColumn(hash, s.migrations);
+  // steady-state only (likewise)
+  if (s.steady_state)
+    hashColumn(hash, bredAfterColumn(s.population));
   return hash.value();
 }
 
@@ -385,6 +397,8 @@ void writeFile(const std::string& path, const CheckpointState& state,
     if (ok)
       ok = writeColumn(group.get(), name, values);
   });
+  if (ok && state.steady_state)
+    ok = writeColumn(group.get(), "bred_after", bredAfterColumn(state.population));
   if (!ok)
     fail("cannot write /population");
   if (!state.migrations.empty() && !writeColumn(f, "migrations", state.migrations))
@@ -519,6 +533,18 @@ CheckpointState readCheckpointHere(const std::string& path) {
     } catch (const std::exception& e) {
       fail(std::string(e.what()) + " (corrupt checkpoint)");
     }
+    // steady-state: each individual's bred_after, one per row
+    if (H5Lexists(group.get(), "bred_after", H5P_DEFAULT) > 0) {
+      std::vector<std::uint64_t> bred_after;
+      if (!readColumn(group.get(), "bred_after", bred_after) ||
+          bred_after.size() != state.population.individuals.size())
+        fail(
+            "dataset /population/bred_after unreadable or not one value per row (corrupt "
+            "checkpoint)");
+      state.steady_state = true;
+      for (std::size_t k = 0; k < bred_after.size(); ++k)
+        state.population.individuals[k].bred_after = bred_after[k];
+    }
     if (stateHash(state, columns, forEach) != hash)
       fail("state_hash does not match the contents (corrupt checkpoint)");
   };
@@ -531,7 +557,9 @@ CheckpointState readCheckpointHere(const std::string& path) {
     read(
         columns, [](auto& c, auto visit) { forEachColumn(c, visit); }, fromColumns);
   }
-  if (!state.population.allEvaluated() || state.population.individuals.empty())
+  // (a steady state's creatures in flight are not evaluated yet)
+  if ((!state.steady_state && !state.population.allEvaluated()) ||
+      state.population.individuals.empty())
     fail("the population of generation " + std::to_string(generation) +
          " is empty or not fully evaluated (corrupt checkpoint)");
   return state;

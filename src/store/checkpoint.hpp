@@ -36,6 +36,10 @@ struct CheckpointState {
   std::string cambrian_version;       ///< version of the cambrian that wrote it (read only)
   std::string git_hash;               ///< and its git commit (read only)
   Population population;              ///< the last evaluated generation, every field kept
+  /// steady-state evolution: `population` holds the members and, unevaluated, the creatures
+  /// handed out and not yet taken in; each individual's bred_after is kept (dataset
+  /// /population/bred_after, present only then)
+  bool steady_state = false;
   /// islands: the island's migration state (MigrationExchange::checkpointState; opaque here),
   /// dataset /migrations; empty without islands (no dataset)
   std::vector<std::uint8_t> migrations;

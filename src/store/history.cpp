@@ -81,6 +81,10 @@ const std::vector<Column>& individualColumns() {
       {"genome_offset", nativeType<std::uint64_t>, 1, "byte",
        "offset of the genome in genome_bytes"},
       {"genome_size", nativeType<std::uint64_t>, 1, "byte", "length of the genome in genome_bytes"},
+      {"bred_after", nativeType<std::uint64_t>, 1, "1",
+       "steady-state runs: results taken in before the individual was bred (rows are in the "
+       "order results were taken in); 0 in generational runs",
+       true},
   };
   return columns;
 }
@@ -552,6 +556,7 @@ void HistoryWriter::appendGeneration(const std::vector<Individual>& rows,
   append(d, "worker_rank", gather<i32>(rows, [](const R& r) { return r.worker_rank; }), 1);
   append(d, "genome_offset", offsets, 1);
   append(d, "genome_size", sizes, 1);
+  append(d, "bred_after", gather<u64>(rows, [](const R& r) { return r.bred_after; }), 1);
 
   // the generation row
   if (generation.unix_time == 0)
@@ -826,7 +831,7 @@ std::vector<Individual> HistoryReader::individuals() const {
       throw InputError(path_ + ": cannot open group /individuals");
 
     // every column, then the rows all of them hold (a live file may be mid-append)
-    std::vector<std::uint64_t> generation, id, parent_a, parent_b, offset, size, steps;
+    std::vector<std::uint64_t> generation, id, parent_a, parent_b, offset, size, steps, bred_after;
     std::vector<std::uint8_t> origin, status, bytes;
     std::vector<double> fitness, measures, eval_seconds;
     std::vector<std::int32_t> parts, joints, neurons, worker_rank;
@@ -858,6 +863,10 @@ std::vector<Individual> HistoryReader::individuals() const {
     column("worker_rank", worker_rank);
     column("genome_offset", offset);
     column("genome_size", size);
+    // written since: absent in older files, where it reads as 0
+    if (H5Lexists(group.get(), "bred_after", H5P_DEFAULT) > 0)
+      column("bred_after", bred_after);
+    bred_after.resize(std::max<std::size_t>(bred_after.size(), generation.size()), 0);
     hsize_t byte_count = 0;
     if (!readColumn(group.get(), "genome_bytes", bytes, byte_count))
       throw InputError(path_ + ": dataset /individuals/genome_bytes missing or unreadable");
@@ -899,6 +908,7 @@ std::vector<Individual> HistoryReader::individuals() const {
       row.evaluated = true;
       row.eval_seconds = eval_seconds[i];
       row.worker_rank = worker_rank[i];
+      row.bred_after = bred_after[i];
       try {
         row.genome = decodeGenome(bytes.data() + offset[i], size[i]);
       } catch (const Error& e) {
