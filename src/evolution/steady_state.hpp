@@ -22,7 +22,6 @@ constexpr std::uint64_t kSteadyStream = ~std::uint64_t{0} - 1;
 /// replacement) from its stream, and it replaces the worst of them (the lowest fitness, ties: the
 /// lowest id, the oldest) when it is at least as fit. A pure function of the members, the
 /// individual and the settings. Returns whether it entered.
-bool takeIntoMembers(Population& members, Individual individual,
-                     const EvolutionSettings& settings);
+bool takeIntoMembers(Population& members, Individual individual, const EvolutionSettings& settings);
 
 }  // namespace cambrian

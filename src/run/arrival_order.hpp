@@ -14,8 +14,8 @@ struct HistoryAttributes;
 /// What a steady-state history records: the ids in the order their results were taken in (its
 /// rows), and how many results were in when each was bred.
 struct ArrivalRecord {
-  std::string path;                    ///< the history it was read from
-  std::vector<std::uint64_t> order;    ///< ids, in the order taken in
+  std::string path;                                             ///< the history it was read from
+  std::vector<std::uint64_t> order;                             ///< ids, in the order taken in
   std::unordered_map<std::uint64_t, std::uint64_t> bred_after;  ///< id -> bred_after
 
   /// The id taken in as the `taken`-th result (from 0); false past the record.

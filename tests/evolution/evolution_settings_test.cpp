@@ -46,6 +46,37 @@ TEST(EvolutionSettings, ImpossibleValuesNameTheKeyAndValue) {
   EXPECT_NE(problem(s).find("evolution.tournament_size"), std::string::npos);
 }
 
+TEST(EvolutionSettings, ASteadyStateRefusesWhatNeedsWholeGenerations) {
+  EvolutionSettings s;
+  s.mode = EvolutionMode::steady_state;
+  EXPECT_EQ(problem(s), "");
+  s.replacement_tournament = 0;
+  EXPECT_NE(problem(s).find("evolution.replacement_tournament = 0"), std::string::npos);
+  s.replacement_tournament = s.population + 1;
+  EXPECT_NE(problem(s).find("evolution.replacement_tournament"), std::string::npos);
+  s.replacement_tournament = 2;
+  s.scheme = BreedingScheme::reaper;
+  EXPECT_NE(problem(s).find("evolution.mode = steady_state: evolution.scheme = reaper"),
+            std::string::npos)
+      << problem(s);
+  s.scheme = BreedingScheme::wwd;
+  EXPECT_NE(problem(s).find("evolution.scheme = wwd"), std::string::npos);
+  s.scheme = BreedingScheme::generational;
+  s.batch_generations = 5;
+  EXPECT_NE(problem(s).find("evolution.batch_generations = 5"), std::string::npos);
+  s.batch_generations = 0;
+  s.ranking = {"distance"};
+  EXPECT_NE(problem(s).find("evolution.ranking"), std::string::npos);
+  // the generational mode takes them all
+  s.mode = EvolutionMode::generational;
+  EXPECT_EQ(problem(s), "");
+  SettingsSchema schema;
+  s.declareSettings(schema);
+  schema.set("evolution.mode", "steady_state");
+  EXPECT_EQ(s.mode, EvolutionMode::steady_state);
+  EXPECT_THROW(schema.set("evolution.mode", "asynchronous"), ConfigError);
+}
+
 TEST(EvolutionSettings, SelectionNamesRoundTripThroughTheKey) {
   EvolutionSettings s;
   SettingsSchema schema;

@@ -30,6 +30,11 @@
 #                   (islands.interval 1) gives the same islands at any rank count, with two
 #                   migrants placed in generations 2 and 3 of each; more islands than ranks is
 #                   exit 3 naming islands.count
+#   steady_state:   evolution.mode = steady_state at NP ranks: the same run again in process and
+#                   at NP ranks from its history's order (run.arrival_order), every worker took
+#                   part, not the generational run; killed in generation 2 and resumed at
+#                   another rank count, its history repeated in process gives its digest;
+#                   with islands, and run.arrival_order without a steady state: exit 3
 #   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
 #                   the run's wall time (a busy-polling rank 0 would use all of it)
 # Every job runs under `timeout`: a job still running after $limit s is a failure (a rank that
@@ -188,6 +193,58 @@ case $mode in
     expect_rc crowded 3
     expect_text "$work/crowded.err" "islands.count = $((np + 1))"
     ;;
+  steady_state)
+    # a steady state at NP ranks, repeated from its history's order in process and at NP ranks
+    job steady "$np" --config "$work/run.ini" --out "$work/steady" --evolution.mode steady_state
+    expect_rc steady 0
+    job following_one 1 --config "$work/run.ini" --out "$work/following_one" \
+      --evolution.mode steady_state --run.arrival_order "$work/steady/history.h5"
+    expect_rc following_one 0
+    expect_same_run steady following_one
+    job following "$np" --config "$work/run.ini" --out "$work/following" \
+      --evolution.mode steady_state --run.arrival_order "$work/steady/history.h5"
+    expect_rc following 0
+    expect_same_run steady following
+    echo "steady state at $np ranks: $(digest_of steady), followed in process and at $np ranks"
+    # every worker took part; the generational run is another run
+    workers=$(cut -f9 "$work/steady/individuals.tsv" | grep -v worker_rank | sort -u | tr '\n' ' ')
+    [ "$workers" = "$(seq 1 $((np - 1)) | tr '\n' ' ')" ] || fail "steady: worker ranks '$workers'"
+    job generational "$np" --config "$work/run.ini" --out "$work/generational"
+    [ "$(digest_of generational)" != "$(digest_of steady)" ] || fail "steady = generational"
+    # killed in generation 2, resumed at another rank count: the history it leaves is one run,
+    # which in process from its order repeats the digest
+    other=$((np == 2 ? 3 : 2))
+    # (rank 0 kills itself: mpiexec's 137 is that kill, not the time limit, when it came early)
+    started=$SECONDS
+    set +e
+    timeout -k 10 "$limit" "$mpiexec" "$npflag" "$np" --oversubscribe "$cambrian" evolve \
+      --config "$work/run.ini" --out "$work/resumed" --evolution.mode steady_state \
+      --run.checkpoint_every 1 --run.test_kill_at evaluation:2 > "$work/killed.out" \
+      2> "$work/killed.err"
+    rc=$?
+    set -e
+    [ $((SECONDS - started)) -lt "$limit" ] || fail "killed: still running after $limit s"
+    [ "$rc" -ne 0 ] || fail "killed: exit 0, expected the kill"
+    job resumed "$other" --config "$work/run.ini" --out "$work/resumed" \
+      --evolution.mode steady_state
+    expect_rc resumed 0
+    expect_text "$work/resumed.out" "resuming from $work/resumed/checkpoint.h5 at generation 2"
+    job replayed 1 --config "$work/run.ini" --out "$work/replayed" --evolution.mode steady_state \
+      --run.arrival_order "$work/resumed/history.h5"
+    expect_rc replayed 0
+    expect_same_run resumed replayed
+    # what a steady state cannot do
+    job islands "$np" --config "$work/run.ini" --out "$work/islands" \
+      --evolution.mode steady_state --islands.count 2
+    expect_rc islands 3
+    expect_text "$work/islands.err" "islands.count = 2 with evolution.mode = steady_state"
+    job not_steady "$np" --config "$work/run.ini" --out "$work/not_steady" \
+      --run.arrival_order "$work/steady/history.h5"
+    expect_rc not_steady 3
+    expect_text "$work/not_steady.err" "run.arrival_order = $work/steady/history.h5"
+    expect_nothing_written "$work/not_steady"
+    ;;
+
   same_run)
     job one 1 --config "$work/run.ini" --out "$work/one"
     expect_rc one 0

@@ -218,5 +218,32 @@ TEST(Scheduler, InProcessEvaluatorFillsOnlyTheMissingOutcomes) {
   EXPECT_GT(span.busy_seconds, 0);
 }
 
+TEST(Scheduler, InProcessStreamAnswersInTheOrderSubmittedAsEvaluateWould) {
+  WorkerSettings settings;
+  settings.creature.set("task.name", "synthetic");
+  settings.creature.set("task.synthetic_cost_us", "20");
+  settings.creature.set("task.synthetic_noise", "0.5");
+  InProcessEvaluator evaluator(settings);
+  Population batch = smallPopulation();
+  evaluator.evaluate(batch, 4);
+  Population streamed = smallPopulation();
+  EXPECT_EQ(evaluator.streamDepth(), 1u);
+  for (std::size_t i : {3u, 1u, 7u})
+    evaluator.submit(streamed.individuals[i], 4);
+  EXPECT_EQ(evaluator.streaming(), 3u);
+  for (std::size_t i : {3u, 1u, 7u}) {
+    StreamedResult result = evaluator.take();
+    EXPECT_EQ(result.id, streamed.individuals[i].id);
+    EXPECT_EQ(result.rank, 0);
+    EXPECT_EQ(result.outcome.fitness, batch.individuals[i].outcome.fitness);
+    EXPECT_EQ(result.outcome.measures, batch.individuals[i].outcome.measures);
+  }
+  EXPECT_EQ(evaluator.streaming(), 0u);
+  EXPECT_THROW(evaluator.take(), std::logic_error);
+  evaluator.submit(streamed.individuals[0], 4);
+  evaluator.discardStream();
+  EXPECT_EQ(evaluator.streaming(), 0u);
+}
+
 }  // namespace
 }  // namespace cambrian

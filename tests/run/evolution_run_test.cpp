@@ -5,6 +5,7 @@
 #include "cambrian/error.hpp"
 
 #include "run/tables.hpp"
+#include "store/checkpoint.hpp"
 #include "store/history.hpp"
 #include "tasks/task.hpp"
 
@@ -34,6 +35,28 @@ RunResult runOnce(const std::string& dir, std::ostream& out, bool fresh = true, 
   if (run.config_text.empty())
     run.config_text = "[evolution]\ngenerations = " + std::to_string(generations) +
                       "\npopulation = 10\n\n[run]\nout = " + dir + "\nseed = 4\n";
+  return runEvolution(settings, worker.creature.encoding(), {}, evaluator, run, out);
+}
+
+// a small synthetic steady-state run (population 10, seed `seed`)
+RunResult runSteady(const std::string& dir, std::ostream& out, bool fresh = true,
+                    int generations = 3, RunSettings run = {}, std::uint64_t seed = 4) {
+  EvolutionSettings settings;
+  settings.mode = EvolutionMode::steady_state;
+  settings.population = 10;
+  settings.generations = generations;
+  settings.seed = seed;
+  WorkerSettings worker;
+  worker.creature.set("task.name", "synthetic");
+  worker.creature.set("task.synthetic_cost_us", "20");
+  InProcessEvaluator evaluator(worker);
+  run.out_dir = dir;
+  run.fresh = fresh;
+  run.measures = worker.creature.task().measures();
+  run.run_only = {"evolution.generations", "run.out", "run.arrival_order"};
+  run.config_text =
+      "[evolution]\nmode = steady_state\ngenerations = " + std::to_string(generations) +
+      "\npopulation = 10\n\n[run]\nout = " + dir + "\nseed = " + std::to_string(seed) + "\n";
   return runEvolution(settings, worker.creature.encoding(), {}, evaluator, run, out);
 }
 
@@ -275,6 +298,80 @@ TEST(EvolutionRun, AChangedResultSettingIsRefused) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::checkpoint);
     EXPECT_NE(std::string(e.what()).find("run.seed was '4'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(EvolutionRun, ASteadyStateTakesInGenerationsOfPopulationResults) {
+  std::ostringstream out;
+  const std::string dir = testing::TempDir() + "/cambrian_evolution_run_test_steady";
+  RunResult result = runSteady(dir, out);
+  ASSERT_EQ(result.generations.size(), 3u);
+  ASSERT_EQ(result.individuals.size(), 30u);
+  for (const GenerationRecord& record : result.generations) {
+    EXPECT_EQ(record.evaluations, 10u);
+    EXPECT_EQ(record.stats.count, 10u);  // the members' statistics
+  }
+  // a result replaces a member only when at least as fit: the best never falls
+  EXPECT_LE(result.generations[0].stats.best, result.generations[1].stats.best);
+  EXPECT_LE(result.generations[1].stats.best, result.generations[2].stats.best);
+  // in process one creature is out at a time: the first generation, then each child bred
+  // after the result before it, taken in in id order
+  const std::vector<Individual> rows = HistoryReader(dir + "/history.h5").individuals();
+  ASSERT_EQ(rows.size(), 30u);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].id, i);
+    EXPECT_EQ(rows[i].generation, i / 10);
+    EXPECT_EQ(rows[i].bred_after, i < 10 ? 0u : i) << "row " << i;
+    EXPECT_EQ(rows[i].origin == Origin::random, i < 10) << "row " << i;
+  }
+  // the same settings give the same run; the generational mode another
+  EXPECT_EQ(runSteady(dir, out).digest, result.digest);
+  EXPECT_NE(runOnce(dir, out).digest, result.digest);
+}
+
+TEST(EvolutionRun, AStoppedSteadyStateResumesToTheStraightRun) {
+  std::ostringstream out;
+  const std::string dir = testing::TempDir() + "/cambrian_evolution_run_test_steady_resume";
+  RunResult straight = runSteady(dir, out);
+  stop_polls = 0;
+  RunSettings stopping;
+  stopping.stop_requested = stopOnSecondPoll;
+  stopping.stop_reason = stopName;
+  RunResult stopped = runSteady(dir, out, true, 3, stopping);
+  ASSERT_TRUE(stopped.stopped);
+  EXPECT_EQ(stopped.next_generation, 1u);
+  // the checkpoint holds the members (in process nothing is in flight at a generation's end:
+  // the next child is bred after it)
+  CheckpointState checkpoint = readCheckpoint(dir + "/checkpoint.h5");
+  EXPECT_TRUE(checkpoint.steady_state);
+  EXPECT_EQ(checkpoint.population.individuals.size(), 10u);
+  EXPECT_TRUE(checkpoint.population.allEvaluated());
+  std::ostringstream second;
+  RunResult resumed = runSteady(dir, second, false);
+  EXPECT_TRUE(resumed.resumed);
+  EXPECT_EQ(resumed.digest, straight.digest);
+  EXPECT_EQ(recordKeys(resumed), recordKeys(straight));
+}
+
+TEST(EvolutionRun, ASteadyStateFollowsARecordedOrderOfItsOwnSettingsOnly) {
+  std::ostringstream out;
+  const std::string recorded = testing::TempDir() + "/cambrian_evolution_run_test_recorded";
+  const std::string dir = testing::TempDir() + "/cambrian_evolution_run_test_following";
+  RunResult original = runSteady(recorded, out);
+  RunSettings following;
+  following.arrival_order = recorded + "/history.h5";
+  EXPECT_EQ(runSteady(dir, out, true, 3, following).digest, original.digest);
+  // a longer run goes on past the record as results arrive
+  EXPECT_EQ(runSteady(dir, out, true, 4, following).generations.size(), 4u);
+  // another seed's record is refused, naming the key and the file
+  try {
+    runSteady(dir, out, true, 3, following, 5);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::config);
+    EXPECT_NE(std::string(e.what()).find("run.arrival_order = " + following.arrival_order),
+              std::string::npos)
+        << e.what();
   }
 }
 

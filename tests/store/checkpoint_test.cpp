@@ -293,6 +293,49 @@ TEST(Checkpoint, KeepsAnIslandsMigrationStateUnderTheStateHash) {
   EXPECT_NE(message.find("state_hash"), std::string::npos) << message;
 }
 
+TEST(Checkpoint, KeepsASteadyStatesCreaturesInFlightAndWhenEachWasBred) {
+  std::string dir = tempDir("steady_state");
+  CheckpointState state = makeState(3);
+  state.steady_state = true;
+  // the last two are in flight: bred, not evaluated
+  auto& individuals = state.population.individuals;
+  for (std::size_t k = 0; k < individuals.size(); ++k)
+    individuals[k].bred_after = 10 + k;
+  for (std::size_t k = individuals.size() - 2; k < individuals.size(); ++k) {
+    individuals[k].evaluated = false;
+    individuals[k].outcome = Outcome{};
+  }
+  writeCheckpoint(dir, state);
+  CheckpointState read = readCheckpoint(checkpointPath(dir));
+  EXPECT_TRUE(read.steady_state);
+  ASSERT_EQ(read.population.individuals.size(), individuals.size());
+  for (std::size_t k = 0; k < individuals.size(); ++k) {
+    EXPECT_EQ(read.population.individuals[k].bred_after, 10 + k);
+    EXPECT_EQ(read.population.individuals[k].evaluated, individuals[k].evaluated);
+  }
+  // a generational checkpoint keeps no bred_after and must be fully evaluated
+  std::string plain = tempDir("not_steady");
+  writeCheckpoint(plain, makeState(3));
+  EXPECT_FALSE(readCheckpoint(checkpointPath(plain)).steady_state);
+  EXPECT_EQ(readCheckpoint(checkpointPath(plain)).population.individuals[1].bred_after, 0u);
+  CheckpointState unevaluated = state;
+  unevaluated.steady_state = false;
+  writeCheckpoint(plain, unevaluated);
+  auto [plain_code, plain_message] = failure([&] { readCheckpoint(checkpointPath(plain)); });
+  EXPECT_EQ(plain_code, ExitCode::checkpoint);
+  EXPECT_NE(plain_message.find("not fully evaluated"), std::string::npos) << plain_message;
+  // a changed bred_after fails the state hash
+  patchFile(checkpointPath(dir), [](hid_t file) {
+    hid_t dataset = H5Dopen2(file, "population/bred_after", H5P_DEFAULT);
+    std::vector<std::uint64_t> values = {10, 11, 99};
+    H5Dwrite(dataset, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    H5Dclose(dataset);
+  });
+  auto [code, message] = failure([&] { readCheckpoint(checkpointPath(dir)); });
+  EXPECT_EQ(code, ExitCode::checkpoint);
+  EXPECT_NE(message.find("state_hash"), std::string::npos) << message;
+}
+
 TEST(Checkpoint, MissingButExpectedIsAnError) {
   // a previous checkpoint without a current one
   std::string dir = tempDir("missing_current");

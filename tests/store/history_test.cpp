@@ -59,6 +59,7 @@ std::vector<Individual> makeRows(std::uint64_t g, int count) {
     o.steps = 2400;
     row.eval_seconds = 0.01 * i;
     row.worker_rank = i % 3;
+    row.bred_after = g * 5 + static_cast<std::uint64_t>(i) / 2;
     row.genome = graph::makeGenotype(graph::randomGenome(graph::GenomeLimits{}, 1000 + g, 0, i));
     rows.push_back(row);
   }
@@ -165,6 +166,7 @@ TEST(History, RoundTripsAttributesRowsAndGenomeBytes) {
       EXPECT_EQ(got.outcome.steps, want.outcome.steps);
       EXPECT_EQ(got.eval_seconds, want.eval_seconds);
       EXPECT_EQ(got.worker_rank, want.worker_rank);
+      EXPECT_EQ(got.bred_after, want.bred_after);
       EXPECT_EQ(got.genomeBytes(), want.genomeBytes());
       EXPECT_TRUE(got.genome == want.genome);
     }
@@ -186,7 +188,7 @@ TEST(History, RoundTripsAttributesRowsAndGenomeBytes) {
   EXPECT_EQ(bytesOf(reader, 103), makeRows(1, 5)[3].genomeBytes());
 }
 
-TEST(History, ReadsAFileWrittenBeforeTheRank0ColumnsAsZero) {
+TEST(History, ReadsAFileWrittenBeforeTheColumnsAddedLaterAsZero) {
   // a history whose /generations lacks the column added after format version 1
   std::string path = tempPath("without_rank0_cpu.h5");
   writeHistory(path, 2);
@@ -194,10 +196,15 @@ TEST(History, ReadsAFileWrittenBeforeTheRank0ColumnsAsZero) {
   ASSERT_GE(file, 0);
   ASSERT_GE(H5Ldelete(file, "generations/rank0_cpu_seconds", H5P_DEFAULT), 0);
   ASSERT_GE(H5Ldelete(file, "generations/rank0_dispatch_seconds", H5P_DEFAULT), 0);
+  // and /individuals without the steady state's bred_after
+  ASSERT_GE(H5Ldelete(file, "individuals/bred_after", H5P_DEFAULT), 0);
   H5Fclose(file);
 
   {
     HistoryReader reader(path);
+    std::vector<Individual> rows = reader.individuals();
+    ASSERT_EQ(rows.size(), 10u);
+    EXPECT_EQ(rows[9].bred_after, 0u);
     std::vector<GenerationRecord> generations = reader.generations();
     ASSERT_EQ(generations.size(), 2u);
     EXPECT_EQ(generations[1].rank0_cpu_seconds, 0.0);
