@@ -51,6 +51,13 @@ generation whose migrants it takes in, one interval earlier (archipelago_time). 
 archipelago's throughput against one island on one worker: K * T(1) / T_archipelago; the bound
 `migration` means the waits for sources add more than 10 % to an island's own generation time.
 
+Steady state (steady_time, evolution.mode = steady_state): the same hand-outs and queues without
+the barrier: after each result rank 0 hands out the next creature to the worker holding fewest,
+at most P / 2 out in all; after every P results it spends S0 (the history row), while the
+workers go on with what they hold; the first generation is waited for (breeding starts once it
+is in) and left out of the time per generation. jobs/bench/steady_state_scaling.sh compares it
+with measured runs.
+
     python3 analysis/scaling_model.py --history runs/scaling/s/w1/r1/history.h5 --output model.png
     python3 analysis/scaling_model.py --cost-mean 0.01 --serial 0.002 --latency 1e-4 --output model.png
     python3 analysis/scaling_model.py --history h.h5 --sweep runs/scaling/s --output model.png
@@ -326,6 +333,76 @@ def archipelago_time(island_times, islands, interval, topology="ring", generatio
                     start = max(start, end[source, event])
             end[i, g] = start + times[rng.integers(len(times))]
     return float(end[:, -1].max()) / generations
+
+
+def steady_time(costs, workers, population, latency, serial, overhead=0.0, in_flight=None):
+    """Mean time per generation (`population` results taken in) of a steady state
+    (evolution.mode = steady_state) evaluating `costs` in the order given, after its first
+    generation: rank 0 hands out one evaluation at a time, each taking `latency` of it, to the
+    worker holding fewest; every worker holds held(mean, ...) evaluations of the middle of a
+    generation, and at most max(1, population // 2) are out in all; after each result it hands
+    out the next, and after each `population` results it spends `serial` (history row,
+    checkpoint) while the workers go on with what they hold. Children are bred only once the
+    first generation is in (its tail is the one barrier). Needs at least two generations of
+    costs."""
+    costs = np.asarray(costs, dtype=float)
+    total = len(costs)
+    if total < 2 * population:
+        raise ValueError("steady_time: at least two generations of costs needed")
+    mean = float(np.mean(costs))
+    depth = held(mean, 10 ** 12, workers, in_flight)
+    cap = min(depth * workers, max(1, population // 2))
+    rank0_free = 0.0
+    queues = [deque() for _ in range(workers)]
+    holding = [0] * workers
+    handed = taken = 0
+    out = 0
+    finishes = []
+    first_generation_end = 0.0
+    end = 0.0
+
+    def hand(worker, ready):
+        nonlocal rank0_free, handed, out
+        rank0_free = max(rank0_free, ready) + latency
+        queues[worker].append((rank0_free, costs[handed]))
+        handed += 1
+        out += 1
+        holding[worker] += 1
+        # a worker with nothing running starts at once
+        if holding[worker] == 1:
+            arrival, cost = queues[worker].popleft()
+            heapq.heappush(finishes, (arrival + cost + overhead, worker))
+
+    def may_hand():
+        # children only once the first generation is in
+        return handed < total and out < cap and (handed < population or taken >= population)
+
+    def fill(ready):
+        while may_hand():
+            worker = min(range(workers), key=lambda w: (holding[w], w))
+            if holding[worker] >= depth:
+                break
+            hand(worker, ready)
+
+    fill(0.0)
+    while finishes:
+        done, worker = heapq.heappop(finishes)
+        end = max(end, done)
+        holding[worker] -= 1
+        out -= 1
+        taken += 1
+        # the next queued evaluation of this worker starts
+        if queues[worker]:
+            arrival, cost = queues[worker].popleft()
+            heapq.heappush(finishes, (max(done, arrival) + cost + overhead, worker))
+        rank0_free = max(rank0_free, done)
+        if taken % population == 0:
+            rank0_free += serial
+            if taken == population:
+                first_generation_end = rank0_free
+        fill(done)
+    generations = total // population
+    return (max(end, rank0_free) - first_generation_end) / (generations - 1)
 
 
 def project(calibration, populations, worker_counts, samples=5, seed=1, island_workers=None, interval=10,

@@ -194,3 +194,33 @@ def test_projection_with_islands():
     # one population of 64 on 64 workers is barrier-bound; 8 islands of 8 workers are not
     alone = sm.project(calibration, [64], [1, 64], samples=2)
     assert by_workers[64]["efficiency"] > alone[-1]["efficiency"]
+
+
+# a steady state on one worker with nothing else to pay: a generation is P costs, and the
+# serial time of each generation's end is added in full (nothing queued to cover it)
+def test_steady_state_on_one_worker():
+    costs = np.full(5 * 40, 0.01)
+    assert sm.steady_time(costs, 1, 40, 0.0, 0.0) == pytest.approx(0.4)
+    # a worker holds two (the one it evaluates and the next): rank 0's serial time is hidden
+    # up to one cost
+    # (but for the last generation's, which nothing follows)
+    assert sm.steady_time(costs, 1, 40, 0.0, 0.005) == pytest.approx(0.4 + 0.005 / 4)
+    # longer than the queued cost: the rest of it idles the worker at every generation's end
+    assert sm.steady_time(costs, 1, 40, 0.0, 0.03) == pytest.approx(0.4 + (3 * 0.02 + 0.03) / 4)
+    with pytest.raises(ValueError):
+        sm.steady_time(costs[:50], 1, 40, 0.0, 0.0)
+
+
+# no barrier: with spread costs the steady state keeps the workers busier than generations do,
+# and at most P / 2 are out: more workers than that add nothing
+def test_steady_state_has_no_barrier_and_caps_what_is_out():
+    rng = np.random.default_rng(3)
+    costs = rng.lognormal(np.log(0.01), 1.0, 300 * 20)
+    steady = sm.steady_time(costs, 60, 300, 0.0, 0.0)
+    generational = np.mean([sm.generation_time(costs[i * 300:(i + 1) * 300], 60, 0.0, 0.0)
+                            for i in range(1, 20)])
+    ideal = 300 * np.mean(costs) / 60
+    assert ideal <= steady < 0.9 * generational
+    capped = sm.steady_time(costs, 300, 300, 0.0, 0.0)
+    assert capped == pytest.approx(sm.steady_time(costs, 150, 300, 0.0, 0.0), rel=0.05)
+    assert capped >= 0.95 * 300 * np.mean(costs) / 150

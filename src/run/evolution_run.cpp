@@ -637,9 +637,12 @@ class EvolutionRun {
     result_.generations.push_back(record);
     walls_.push_back(record.wall_seconds);
     pending_ = Pending{result_.generations.size() - 1, breeder_.nextId()};
-    // the next generation's time starts here, its history append and checkpoint included
-    generation_start_ = Clock::now();
-    generation_cpu_start_ = processCpuSeconds();
+    // the next generation's time starts here, this one's history append and checkpoint
+    // included (the last one's: in its own, as a generational run's)
+    if (!final_write) {
+      generation_start_ = Clock::now();
+      generation_cpu_start_ = processCpuSeconds();
+    }
     finishPending(final_write);
     progress(g, result_.generations.back(), 0);
   }
