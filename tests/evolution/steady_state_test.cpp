@@ -2,9 +2,8 @@
 // reverse tournament), and the child bred from the members as they are.
 #include "evolution/steady_state.hpp"
 
-#include "evolution/breeder.hpp"
-
 #include "encodings/directed_graph/encoding.hpp"
+#include "evolution/breeder.hpp"
 
 #include <gtest/gtest.h>
 
