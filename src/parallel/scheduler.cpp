@@ -75,6 +75,25 @@ bool anyToBeMade(const Population& population) {
                      [](const Individual& i) { return !i.evaluated && !i.genome.made(); });
 }
 
+// the result a worker sent; Error(mpi) naming the rank when its bytes do not decode
+EvalResult resultFrom(const Message& message) {
+  try {
+    return decodeResult(message.bytes);
+  } catch (const Error& e) {
+    throw Error(ExitCode::mpi,
+                "malformed result from rank " + std::to_string(message.source) + ": " + e.what());
+  }
+}
+
+// rank 0's next sleep: `relaxed` (DispatchPace::relaxedMicros, while every worker has work
+// queued) or, when that is 0, short looks within a quarter of an evaluation of `mean` seconds
+void paceWait(Backoff& backoff, long relaxed, double mean) {
+  if (relaxed > 0)
+    backoff.range(relaxed, relaxed);
+  else
+    backoff.range(Backoff::kMin, std::min(Backoff::quarterOf(mean), Backoff::kUrgent));
+}
+
 }  // namespace
 
 void DispatchSettings::declareSettings(SettingsSchema& s) {
@@ -290,22 +309,12 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
       // while every worker has work queued, nothing is urgent: sleep a quarter of it; when a
       // worker holds only the creature it evaluates (it may be waiting for the next), and once
       // everything is handed out (the generation ends with the last result), look often
-      long relaxed = next < order.size() ? pace_.relaxedMicros(mean(), depth()) : 0;
-      if (relaxed > 0)
-        backoff.range(relaxed, relaxed);
-      else
-        backoff.range(Backoff::kMin, std::min(Backoff::quarterOf(mean()), Backoff::kUrgent));
+      paceWait(backoff, next < order.size() ? pace_.relaxedMicros(mean(), depth()) : 0, mean());
       backoff.wait();
       continue;
     }
     backoff.reset();
-    EvalResult result;
-    try {
-      result = decodeResult(message.bytes);
-    } catch (const Error& e) {
-      throw Error(ExitCode::mpi,
-                  "malformed result from rank " + std::to_string(message.source) + ": " + e.what());
-    }
+    EvalResult result = resultFrom(message);
     // stored by id, whatever the arrival order
     std::size_t index = 0;
     try {
@@ -382,23 +391,12 @@ StreamedResult MpiScheduler::take() {
     // every worker with one queued behind the one it evaluates: sleep a quarter of that work;
     // else a worker may be waiting, so look often
     const int least = *std::min_element(stream_held_.begin() + 1, stream_held_.end());
-    const long relaxed = pace_.relaxedMicros(streamMean(), least);
-    if (relaxed > 0)
-      stream_backoff_.range(relaxed, relaxed);
-    else
-      stream_backoff_.range(Backoff::kMin,
-                            std::min(Backoff::quarterOf(streamMean()), Backoff::kUrgent));
+    paceWait(stream_backoff_, pace_.relaxedMicros(streamMean(), least), streamMean());
     stream_backoff_.wait();
   }
   auto start = Clock::now();
   stream_backoff_.reset();
-  EvalResult result;
-  try {
-    result = decodeResult(message.bytes);
-  } catch (const Error& e) {
-    throw Error(ExitCode::mpi,
-                "malformed result from rank " + std::to_string(message.source) + ": " + e.what());
-  }
+  EvalResult result = resultFrom(message);
   if (streamed_.erase(result.id) == 0)
     throw Error(ExitCode::mpi, "rank " + std::to_string(message.source) +
                                    " answered for creature " + std::to_string(result.id) +

@@ -17,32 +17,12 @@
 namespace cambrian {
 namespace {
 
-// a small synthetic run; `fresh` ignores a checkpoint left in `dir` by an earlier run
-RunResult runOnce(const std::string& dir, std::ostream& out, bool fresh = true, int generations = 3,
-                  RunSettings run = {}) {
+// a small synthetic run of population 10 in `mode`; `fresh` ignores a checkpoint left in `dir`
+// by an earlier run
+RunResult runIn(EvolutionMode mode, const std::string& dir, std::ostream& out, bool fresh,
+                int generations, RunSettings run, std::uint64_t seed) {
   EvolutionSettings settings;
-  settings.population = 10;
-  settings.generations = generations;
-  settings.seed = 4;
-  WorkerSettings worker;
-  worker.creature.set("task.name", "synthetic");
-  worker.creature.set("task.synthetic_cost_us", "20");
-  InProcessEvaluator evaluator(worker);
-  run.out_dir = dir;
-  run.fresh = fresh;
-  run.measures = worker.creature.task().measures();
-  run.run_only = {"evolution.generations", "run.out"};
-  if (run.config_text.empty())
-    run.config_text = "[evolution]\ngenerations = " + std::to_string(generations) +
-                      "\npopulation = 10\n\n[run]\nout = " + dir + "\nseed = 4\n";
-  return runEvolution(settings, worker.creature.encoding(), {}, evaluator, run, out);
-}
-
-// a small synthetic steady-state run (population 10, seed `seed`)
-RunResult runSteady(const std::string& dir, std::ostream& out, bool fresh = true,
-                    int generations = 3, RunSettings run = {}, std::uint64_t seed = 4) {
-  EvolutionSettings settings;
-  settings.mode = EvolutionMode::steady_state;
+  settings.mode = mode;
   settings.population = 10;
   settings.generations = generations;
   settings.seed = seed;
@@ -53,11 +33,26 @@ RunResult runSteady(const std::string& dir, std::ostream& out, bool fresh = true
   run.out_dir = dir;
   run.fresh = fresh;
   run.measures = worker.creature.task().measures();
-  run.run_only = {"evolution.generations", "run.out", "run.arrival_order"};
-  run.config_text =
-      "[evolution]\nmode = steady_state\ngenerations = " + std::to_string(generations) +
-      "\npopulation = 10\n\n[run]\nout = " + dir + "\nseed = " + std::to_string(seed) + "\n";
+  run.run_only = {"evolution.generations", "run.out"};
+  if (mode == EvolutionMode::steady_state)
+    run.run_only.insert("run.arrival_order");
+  if (run.config_text.empty())
+    run.config_text = std::string("[evolution]\n") +
+                      (mode == EvolutionMode::steady_state ? "mode = steady_state\n" : "") +
+                      "generations = " + std::to_string(generations) +
+                      "\npopulation = 10\n\n[run]\nout = " + dir +
+                      "\nseed = " + std::to_string(seed) + "\n";
   return runEvolution(settings, worker.creature.encoding(), {}, evaluator, run, out);
+}
+
+RunResult runOnce(const std::string& dir, std::ostream& out, bool fresh = true, int generations = 3,
+                  RunSettings run = {}) {
+  return runIn(EvolutionMode::generational, dir, out, fresh, generations, std::move(run), 4);
+}
+
+RunResult runSteady(const std::string& dir, std::ostream& out, bool fresh = true,
+                    int generations = 3, RunSettings run = {}, std::uint64_t seed = 4) {
+  return runIn(EvolutionMode::steady_state, dir, out, fresh, generations, std::move(run), seed);
 }
 
 // a stop request that turns true on its second poll (after one generation)
