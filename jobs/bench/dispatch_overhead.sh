@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# The framework's overhead per evaluation for short creatures, cambrian beside its peers: 300
-# synthetic creatures of a fixed cost (100 us, 1 ms, 10 ms), 2 workers, the cost spent spinning or
-# asleep. Overhead per evaluation = wall x workers / evaluations - cost (the whole generational
-# loop: breeding, dispatch, history); for cambrian also beyond the evaluations' own measured time
-# (wall x workers - their busy time, per evaluation: what a sleep's wake-up latency does not
-# count in). Peers, where their Debian packages are installed:
-# DEAP with multiprocessing.Pool and with mpi4py.futures (python3-deap, python3-mpi4py), pagmo2's
-# thread batch evaluator (libpagmo-dev). Figures and their reading: docs/performance.md.
+# The framework's overhead per evaluation for short creatures, cambrian (generational, and steady
+# state: `cambrian_steady`) beside its peers: 300 synthetic creatures of a fixed cost (100 us,
+# 1 ms, 10 ms), 2 workers, the cost spent spinning or asleep. Overhead per evaluation = wall x
+# workers / evaluations - cost (the whole loop: breeding, dispatch, history); for cambrian also
+# beyond the evaluations' own measured time (wall x workers - their busy time, per evaluation:
+# what a sleep's wake-up latency does not count in). Peers, where their Debian packages are
+# installed: DEAP with multiprocessing.Pool and with mpi4py.futures (python3-deap,
+# python3-mpi4py), pagmo2's thread batch evaluator (libpagmo-dev). Figures and their reading:
+# docs/performance.md.
 # usage: jobs/bench/dispatch_overhead.sh [path/to/cambrian] [spin|sleep|both] [quick]
 #   quick: two generations per cost (a smoke test; the figures mean little)
 set -euo pipefail
@@ -47,20 +48,25 @@ printf "%-6s %-9s %-18s %11s %9s %13s %17s %13s\n" work "cost (us)" system evalu
 for spend in $works; do
   for cost in 100 1000 10000; do
     g=$(generations "$cost")
-    # cambrian: the generations' own times (startup and the final tables left out, as for peers)
-    out="$work/cambrian-$spend-$cost"
-    mpirun -np $((workers + 1)) --oversubscribe "$cambrian" evolve \
-      --config jobs/experiments/synthetic.ini --task.synthetic_distribution fixed \
-      --task.synthetic_cost_us "$cost" --task.synthetic_work "$spend" \
-      --evolution.generations "$g" --quiet --out "$out" > "$out.txt"
-    read -r evals wall cpu busy <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
-      { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"]
-        b += $col["worker_busy_seconds"] }
-      END { printf "%d %.6f %.6f %.6f", e, w, c, b }' "$out/generations.tsv")"
-    printf "%-6s %-9s %-18s %11s %9.3f %13s %17s %13.1f\n" "$spend" "$cost" cambrian "$evals" "$wall" \
-      "$(overhead "$evals" "$wall" $workers "$cost")" \
-      "$(awk -v e="$evals" -v w="$wall" -v b="$busy" -v n=$workers 'BEGIN { printf "%.1f", (w * n - b) / e * 1e6 }')" \
-      "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
+    # cambrian, generational and steady state: the generations' own times (startup and the
+    # final tables left out, as for peers)
+    for mode in generational steady_state; do
+      system=cambrian
+      [ "$mode" = steady_state ] && system=cambrian_steady
+      out="$work/$system-$spend-$cost"
+      mpirun -np $((workers + 1)) --oversubscribe "$cambrian" evolve \
+        --config jobs/experiments/synthetic.ini --task.synthetic_distribution fixed \
+        --task.synthetic_cost_us "$cost" --task.synthetic_work "$spend" \
+        --evolution.generations "$g" --evolution.mode "$mode" --quiet --out "$out" > "$out.txt"
+      read -r evals wall cpu busy <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+        { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"]
+          b += $col["worker_busy_seconds"] }
+        END { printf "%d %.6f %.6f %.6f", e, w, c, b }' "$out/generations.tsv")"
+      printf "%-6s %-9s %-18s %11s %9.3f %13s %17s %13.1f\n" "$spend" "$cost" "$system" "$evals" \
+        "$wall" "$(overhead "$evals" "$wall" $workers "$cost")" \
+        "$(awk -v e="$evals" -v w="$wall" -v b="$busy" -v n=$workers 'BEGIN { printf "%.1f", (w * n - b) / e * 1e6 }')" \
+        "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
+    done
     for peer in "${peers[@]}"; do
       case $peer in
         deap_pool) line=$($python jobs/bench/peers/deap_overhead.py --map pool --workers $workers \

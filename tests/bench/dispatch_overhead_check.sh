@@ -16,6 +16,9 @@ grep -q '^work *cost (us) *system *evaluations *wall (s) *overhead (us)' <<< "$t
 for cost in 100 1000 10000; do
   grep -Eq "^sleep +$cost +cambrian +540 +[0-9.]+ +-?[0-9.]+ +-?[0-9.]+ +[0-9.]+$" <<< "$table" ||
     fail "no sound cambrian row at $cost us"
+  # the steady state: two generations of 300 results
+  grep -Eq "^sleep +$cost +cambrian_steady +600 +[0-9.]+ +-?[0-9.]+ +-?[0-9.]+ +[0-9.]+$" \
+    <<< "$table" || fail "no sound cambrian_steady row at $cost us"
 done
 # every row has a number of evaluations and a wall time above zero
 awk 'NR > 1 && !($4 > 0 && $5 > 0) { bad = 1 } END { exit bad }' <<< "$table" ||

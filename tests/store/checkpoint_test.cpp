@@ -325,9 +325,12 @@ TEST(Checkpoint, KeepsASteadyStatesCreaturesInFlightAndWhenEachWasBred) {
   EXPECT_EQ(plain_code, ExitCode::checkpoint);
   EXPECT_NE(plain_message.find("not fully evaluated"), std::string::npos) << plain_message;
   // a changed bred_after fails the state hash
-  patchFile(checkpointPath(dir), [](hid_t file) {
+  const std::size_t rows = individuals.size();
+  patchFile(checkpointPath(dir), [rows](hid_t file) {
     hid_t dataset = H5Dopen2(file, "population/bred_after", H5P_DEFAULT);
-    std::vector<std::uint64_t> values = {10, 11, 99};
+    std::vector<std::uint64_t> values(rows);
+    H5Dread(dataset, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    values.back() = 99;
     H5Dwrite(dataset, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
     H5Dclose(dataset);
   });
