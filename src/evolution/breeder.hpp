@@ -16,6 +16,7 @@
 namespace cambrian {
 
 class Rng;
+class SteadyMembers;
 
 /// How many individuals of a generation each operator makes. Sums to the population size.
 struct BreedingPlan {
@@ -71,8 +72,9 @@ class Breeder {
   /// parents (by evolution.selection, or mutation_selection) come from the stream (seed,
   /// selection, id, kSteadyStream), its genome (made when first read) from (seed, variation, id,
   /// kSteadyStream); `bred_after` is recorded on it, its generation is the members'. A pure
-  /// function of the members' genomes and fitnesses and the id. Implemented in steady_state.cpp.
-  Individual steadyChild(const Population& members, std::uint64_t bred_after);
+  /// function of the members' genomes and fitnesses and the id. Throws std::invalid_argument
+  /// when there are no members. Implemented in steady_state.cpp.
+  Individual steadyChild(const SteadyMembers& members, std::uint64_t bred_after);
 
   /// New individuals that fail `check` are redrawn — same parents, the next draws of the same
   /// random stream — up to `max_attempts` times in all (Chaumont et al. 5.5). Elites and seed

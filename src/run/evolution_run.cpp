@@ -93,7 +93,8 @@ class EvolutionRun {
         out_(out),
         breeder_(settings, encoding),
         total_(static_cast<std::uint64_t>(std::max(settings.generations, 0))),
-        steady_(settings.mode == EvolutionMode::steady_state) {
+        steady_(settings.mode == EvolutionMode::steady_state),
+        members_(settings_) {
     setTestKillPoint(run.test_kill_at);
     for (const std::string& text : settings.ranking)
       ranking_.push_back(parseRankedMeasure(text, "evolution.ranking"));
@@ -320,7 +321,7 @@ class EvolutionRun {
     digest_.add(*last_);
     retired_.reset();
     GenerationRecord& record = result_.generations[pending_->record];
-    record.distinct_genomes = distinctGenomes(steady_ ? members_ : *last_);
+    record.distinct_genomes = distinctGenomes(steady_ ? members_.population() : *last_);
     if (!history_) {
       pending_.reset();
       return;
@@ -476,7 +477,7 @@ class EvolutionRun {
   }
 
   // steady state (evolution.mode = steady_state): no generation barrier. Each result is taken
-  // in as it arrives (takeIntoMembers) and answered with a child bred from the members then
+  // in as it arrives (SteadyMembers::takeIn) and answered with a child bred from the members then
   // (Breeder::steadyChild), so the workers always hold DispatchPace's few milliseconds of work;
   // breeding starts once the first generation is in. Every `population` results taken in make
   // a "generation": its rows (in the order taken in) go to the history, the members' statistics
@@ -493,14 +494,14 @@ class EvolutionRun {
     } else {
       for (Individual& individual : last_->individuals) {
         if (individual.evaluated)
-          members_.individuals.push_back(std::move(individual));
+          members_.takeIn(std::move(individual));
         else
           unsent.push_back(std::move(individual));
       }
       last_.reset();
     }
     std::uint64_t taken = start_ * P;
-    members_.generation = start_;
+    members_.setGeneration(start_);
     if (start_ >= total_)
       return start_;
     stop_reason = stopReason(start_);
@@ -535,7 +536,7 @@ class EvolutionRun {
         handOut(std::move(unsent.front()));
         unsent.pop_front();
       }
-      while (unsent.empty() && members_.individuals.size() == P && breeder_.nextId() < births &&
+      while (unsent.empty() && members_.size() == P && breeder_.nextId() < births &&
              mayHandOut(breeder_.nextId(), taken))
         handOut(breeder_.steadyChild(members_, taken));
       if (in_flight.empty())
@@ -554,7 +555,7 @@ class EvolutionRun {
       individual.generation = taken / P;
       busy += individual.eval_seconds;
       rows.push_back(individual);
-      takeIntoMembers(members_, std::move(individual), settings_);
+      members_.takeIn(std::move(individual));
       ++taken;
       const std::uint64_t g = (taken - 1) / P;
       if (live)
@@ -568,7 +569,7 @@ class EvolutionRun {
       // a generation's worth taken in: its record, history rows and checkpoint
       if (live)
         clearLiveLine();
-      members_.generation = g + 1;
+      members_.setGeneration(g + 1);
       const bool last = g + 1 == total_;
       if (!last)
         stop_reason = stopReason(g + 1);
@@ -620,7 +621,7 @@ class EvolutionRun {
                            double dispatch, bool final_write) {
     GenerationRecord record;
     record.generation = g;
-    record.stats = computeStats(members_);
+    record.stats = computeStats(members_.population());
     record.evaluations = rows.size();
     record.workers = evaluator_.workers();
     record.evaluation_span_seconds = secondsSince(generation_start_);
@@ -628,7 +629,7 @@ class EvolutionRun {
     record.worker_busy_seconds = busy;
     record.worker_idle_seconds =
         std::max(0.0, record.workers * record.evaluation_span_seconds - busy);
-    record.fitness_deviation = mutationScale(settings_, members_).deviation;
+    record.fitness_deviation = mutationScale(settings_, members_.population()).deviation;
     record.mutation_multiplier = 1;
     for (const Individual& row : rows)
       result_.individuals.push_back(tableRecord(row));
@@ -650,8 +651,9 @@ class EvolutionRun {
   // a steady state's checkpoint: the members and the creatures in flight, in id order
   Population steadyCheckpointPopulation() const {
     Population population;
-    population.generation = members_.generation == 0 ? 0 : members_.generation - 1;
-    population.individuals = members_.individuals;
+    const std::uint64_t next = members_.population().generation;
+    population.generation = next == 0 ? 0 : next - 1;
+    population.individuals = members_.population().individuals;
     for (const auto& [id, individual] : steady_in_flight_)
       population.individuals.push_back(individual);
     for (const Individual& individual : steady_unsent_)
@@ -736,7 +738,7 @@ class EvolutionRun {
   const std::uint64_t total_;
   const bool steady_;                                     // evolution.mode = steady_state
   std::optional<ArrivalRecord> arrivals_;                 // run.arrival_order, read
-  Population members_;                                    // a steady state's members, in id order
+  SteadyMembers members_;                                 // a steady state's members
   std::map<std::uint64_t, Individual> steady_in_flight_;  // handed out, not yet taken in
   std::deque<Individual> steady_unsent_;                  // to hand out
   double cpu_start_ = processCpuSeconds();
