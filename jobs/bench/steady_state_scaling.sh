@@ -9,9 +9,10 @@
 # rank 0's CPU share, and analysis/scaling_model.py's time for the same point (generation_time
 # or steady_time), calibrated on the first rank count's generational run, with its error.
 # Figures and their reading: docs/scaling.md.
-# usage: jobs/bench/steady_state_scaling.sh [path/to/cambrian] [RANKS] [quick]
+# usage: [PLOT=FILE.png] jobs/bench/steady_state_scaling.sh [path/to/cambrian] [RANKS] [quick]
 #   RANKS: space-separated rank counts (default "2 16 32 64")
 #   quick: three generations of 40 creatures of 2 ms (a smoke test; the figures mean little)
+#   PLOT: also draw each design's measured efficiency (markers) and the model's (lines) there
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cambrian=$(realpath "${1:-build/release/src/app/cambrian}")
@@ -35,7 +36,7 @@ for ranks in $ranks_list; do
 done
 
 # the table, with the model's time for each run
-/usr/bin/python3 - "$work" "$cost_us" "$population" $ranks_list <<'PY'
+PLOT=${PLOT:-} /usr/bin/python3 - "$work" "$cost_us" "$population" $ranks_list <<'PY'
 import csv
 import os
 import sys
@@ -59,6 +60,7 @@ print("%-13s %6s %8s %13s %11s %14s %12s %10s %10s" % (
     "design", "ranks", "workers", "generation s", "efficiency", "overhead/eval", "rank0 CPU %", "model s",
     "model err"))
 rng = np.random.default_rng(1)
+points = {"generational": [], "steady_state": []}  # (workers, measured, modelled efficiency)
 for ranks in (int(r) for r in ranks_list):
     workers = max(1, ranks - 1)
     for mode in ("generational", "steady_state"):
@@ -73,7 +75,30 @@ for ranks in (int(r) for r in ranks_list):
             model = float(np.mean([sm.steady_time(calibration.draw(8 * population, rng), workers, population,
                                                   calibration.latency, calibration.serial, calibration.overhead)
                                    for _ in range(3)]))
+        efficiency = evaluations * cost / (workers * seconds)
+        points[mode].append((workers, efficiency, evaluations * cost / (workers * model)))
         print("%-13s %6d %8d %13.4f %10.1f%% %11.0f us %11.1f%% %10.4f %+9.1f%%" % (
-            mode, ranks, workers, seconds, 100 * evaluations * cost / (workers * seconds),
-            1e6 * (seconds * workers / evaluations - cost), 100 * cpu, model, 100 * (model / seconds - 1)))
+            mode, ranks, workers, seconds, 100 * efficiency, 1e6 * (seconds * workers / evaluations - cost),
+            100 * cpu, model, 100 * (model / seconds - 1)))
+
+if os.environ.get("PLOT"):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    figure, axes = plt.subplots(figsize=(6.4, 4.2))
+    for (mode, rows), colour in zip(points.items(), ("tab:blue", "tab:orange")):
+        workers, measured, modelled = zip(*rows)
+        label = mode.replace("_", " ")
+        axes.plot(workers, modelled, color=colour, label=label + ", model")
+        axes.scatter(workers, measured, color=colour, marker="o", zorder=3, label=label + ", measured")
+    axes.set_xscale("log", base=2)
+    axes.set_ylim(0, 1.05)
+    axes.set_xlabel("workers")
+    axes.set_ylabel("efficiency")
+    axes.set_title("P = %d, %g ms sleeping cost (uniform, cv 0.5)" % (population, cost * 1e3))
+    axes.grid(alpha=0.3, which="both")
+    axes.legend(fontsize="small")
+    figure.tight_layout()
+    figure.savefig(os.environ["PLOT"], dpi=110)
+    print("# plot %s" % os.environ["PLOT"])
 PY
