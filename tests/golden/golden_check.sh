@@ -102,6 +102,14 @@ case $mode in
     evolve synthetic --task.name synthetic --task.synthetic_cost_us 100 \
       --task.synthetic_cost_per_gene_us 10 --task.synthetic_noise 0.3 \
       --evolution.population 24 --evolution.generations 6 --seed 11
+    # a steady state: in process (one creature out at a time: deterministic), and at NP ranks
+    # following that run's recorded order (docs/steady-state.md), which repeats it
+    steady=(--task.name synthetic --task.synthetic_cost_us 100 --task.synthetic_cost_per_gene_us 10
+      --task.synthetic_noise 0.3 --evolution.population 24 --evolution.generations 6 --seed 11
+      --evolution.mode steady_state)
+    np=1 evolve steady_synthetic "${steady[@]}"
+    evolve steady_synthetic_followed "${steady[@]}" \
+      --run.arrival_order "$work/steady_synthetic/history.h5"
     ;;
   walk)
     evolve walk --config "$source_dir/jobs/experiments/walk.ini" --evolution.population 16 \
