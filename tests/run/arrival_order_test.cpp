@@ -5,9 +5,8 @@
 #include "cambrian/error.hpp"
 
 #include "run/evolution_run.hpp"
-#include "run/resume.hpp"
+#include "run/small_synthetic_run.hpp"
 #include "store/history.hpp"
-#include "tasks/task.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,24 +17,10 @@ namespace {
 
 // a run of `mode` writing DIR/history.h5; returns the attributes its history holds
 HistoryAttributes runIn(const std::string& dir, EvolutionMode mode, std::uint64_t seed = 4) {
-  EvolutionSettings settings;
-  settings.mode = mode;
-  settings.population = 6;
-  settings.generations = 2;
-  settings.seed = seed;
-  WorkerSettings worker;
-  worker.creature.set("task.name", "synthetic");
-  InProcessEvaluator evaluator(worker);
-  RunSettings run;
-  run.out_dir = dir;
-  run.fresh = true;
-  run.quiet = true;
-  run.measures = worker.creature.task().measures();
-  run.config_text = std::string("[evolution]\nmode = ") +
-                    (mode == EvolutionMode::steady_state ? "steady_state" : "generational") +
-                    "\npopulation = 6\n\n[run]\nseed = " + std::to_string(seed) + "\n";
   std::ostringstream out;
-  runEvolution(settings, worker.creature.encoding(), {}, evaluator, run, out);
+  RunSettings run;
+  run.quiet = true;
+  smallSyntheticRun(mode, dir, out, true, 6, 2, run, seed);
   return HistoryReader(dir + "/history.h5").attributes();
 }
 

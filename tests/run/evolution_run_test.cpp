@@ -4,6 +4,7 @@
 
 #include "cambrian/error.hpp"
 
+#include "run/small_synthetic_run.hpp"
 #include "run/tables.hpp"
 #include "store/checkpoint.hpp"
 #include "store/history.hpp"
@@ -17,42 +18,18 @@
 namespace cambrian {
 namespace {
 
-// a small synthetic run of population 10 in `mode`; `fresh` ignores a checkpoint left in `dir`
-// by an earlier run
-RunResult runIn(EvolutionMode mode, const std::string& dir, std::ostream& out, bool fresh,
-                int generations, RunSettings run, std::uint64_t seed) {
-  EvolutionSettings settings;
-  settings.mode = mode;
-  settings.population = 10;
-  settings.generations = generations;
-  settings.seed = seed;
-  WorkerSettings worker;
-  worker.creature.set("task.name", "synthetic");
-  worker.creature.set("task.synthetic_cost_us", "20");
-  InProcessEvaluator evaluator(worker);
-  run.out_dir = dir;
-  run.fresh = fresh;
-  run.measures = worker.creature.task().measures();
-  run.run_only = {"evolution.generations", "run.out"};
-  if (mode == EvolutionMode::steady_state)
-    run.run_only.insert("run.arrival_order");
-  if (run.config_text.empty())
-    run.config_text = std::string("[evolution]\n") +
-                      (mode == EvolutionMode::steady_state ? "mode = steady_state\n" : "") +
-                      "generations = " + std::to_string(generations) +
-                      "\npopulation = 10\n\n[run]\nout = " + dir +
-                      "\nseed = " + std::to_string(seed) + "\n";
-  return runEvolution(settings, worker.creature.encoding(), {}, evaluator, run, out);
-}
-
+// a small synthetic run (population 10, seed 4); `fresh` ignores a checkpoint left in `dir`
 RunResult runOnce(const std::string& dir, std::ostream& out, bool fresh = true, int generations = 3,
                   RunSettings run = {}) {
-  return runIn(EvolutionMode::generational, dir, out, fresh, generations, std::move(run), 4);
+  return smallSyntheticRun(EvolutionMode::generational, dir, out, fresh, 10, generations,
+                           std::move(run), 4);
 }
 
+// the same as a steady state (seed `seed`)
 RunResult runSteady(const std::string& dir, std::ostream& out, bool fresh = true,
                     int generations = 3, RunSettings run = {}, std::uint64_t seed = 4) {
-  return runIn(EvolutionMode::steady_state, dir, out, fresh, generations, std::move(run), seed);
+  return smallSyntheticRun(EvolutionMode::steady_state, dir, out, fresh, 10, generations,
+                           std::move(run), seed);
 }
 
 // a stop request that turns true on its second poll (after one generation)
