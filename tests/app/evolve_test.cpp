@@ -127,7 +127,8 @@ TEST(EvolveCommand, AHistoryWithoutACheckpointIsNeverOverwritten) {
 
   // a run's history whose checkpoints are gone: refused too; --fresh starts over
   std::string run = freshDir("no_checkpoint");
-  ASSERT_EQ(runCambrian(tinyRun(run)).exit_code, 0);
+  auto first = runCambrian(tinyRun(run));
+  ASSERT_EQ(first.exit_code, 0) << first.output;
   std::filesystem::remove(run + "/checkpoint.h5");
   std::filesystem::remove(run + "/checkpoint.prev.h5");
   std::string history = contents(run + "/history.h5");
@@ -237,7 +238,8 @@ TEST(EvolveCommand, ASecondRunOnTheSameDirectoryIsRefused) {
 
 TEST(EvolveCommand, ResumingACheckpointOfAnotherVersionWarns) {
   std::string dir = freshDir("other_version");
-  ASSERT_EQ(runCambrian(tinyRun(dir)).exit_code, 0);
+  auto first = runCambrian(tinyRun(dir));
+  ASSERT_EQ(first.exit_code, 0) << first.output;
 
   // the checkpoint says an older cambrian wrote it
   hid_t file = H5Fopen((dir + "/checkpoint.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
