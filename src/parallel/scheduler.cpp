@@ -209,7 +209,7 @@ long DispatchPace::relaxedMicros(double mean_seconds, int held) const {
 }
 
 MpiScheduler::MpiScheduler(MpiContext& mpi, const DispatchSettings& dispatch, int in_flight)
-    : mpi_(mpi), dispatch_(dispatch) {
+    : mpi_(mpi), dispatch_(dispatch), stream_held_(static_cast<std::size_t>(mpi.size()), 0) {
   pace_.in_flight = std::max(1, in_flight);
   if (mpi.size() < 2)
     throw Error(ExitCode::mpi, "MpiScheduler needs at least 2 ranks");
@@ -367,14 +367,12 @@ std::size_t MpiScheduler::streamDepth() const {
 }
 
 void MpiScheduler::submit(const Individual& individual, std::uint64_t run_seed) {
-  stream_held_.resize(static_cast<std::size_t>(mpi_.size()), 0);
   // the worker holding the fewest (ties: the lowest rank)
   int worker = 1;
   for (int w = 2; w < mpi_.size(); ++w) {
     if (stream_held_[static_cast<std::size_t>(w)] < stream_held_[static_cast<std::size_t>(worker)])
       worker = w;
   }
-  individual.genome.bytes();
   mpi_.post(worker, Tag::request, encodeRequest(makeRequest(individual, run_seed, 0)));
   streamed_.insert(individual.id);
   ++stream_held_[static_cast<std::size_t>(worker)];

@@ -19,7 +19,7 @@ ArrivalRecord readArrivalRecord(const std::string& path, const HistoryAttributes
     // a record of this run's settings only (the run-only ones aside)
     if (iniValues(recorded.config_text)["evolution.mode"] != "steady_state")
       throw Error(ExitCode::config,
-                  where + ": not a steady-state run (its evolution.mode is " + "not steady_state)");
+                  where + ": not a steady-state run (its evolution.mode is not steady_state)");
     if (recorded.seed != this_run.seed || recorded.config_hash != this_run.config_hash)
       throw Error(ExitCode::config,
                   where + ": recorded by a run of other settings (seed " +

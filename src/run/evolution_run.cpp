@@ -630,7 +630,6 @@ class EvolutionRun {
     record.worker_idle_seconds =
         std::max(0.0, record.workers * record.evaluation_span_seconds - busy);
     record.fitness_deviation = mutationScale(settings_, members_.population()).deviation;
-    record.mutation_multiplier = 1;
     for (const Individual& row : rows)
       result_.individuals.push_back(tableRecord(row));
     closeTimes(record);
