@@ -207,13 +207,15 @@ check_complete() {
 
 # resume: a chain of six jobs (afterany) with a short time limit: the first is stopped by its
 # signal, the next ones by --max-hours (60 s limit less a 50 s margin: about 10 s of a run
-# that needs at least 12.6 s of evaluations, so the second job cannot finish it however fast
-# the machine, and four jobs have three times the time it needs, however slow: 100 generations
-# once left a sanitizer build 6 short), one completes the run and cancels the rest; the history
-# equals a straight run's
+# that needs about 13 s of evaluations after the first job's few generations — 70 generations
+# of about 10 evaluated creatures, the elites being copied, of 20 ms — so the second job cannot
+# finish it however fast the machine (at 15 ms a fast machine once finished 63 generations in
+# 9.95 s), and four jobs have about three times the time it needs, however slow: 100
+# generations of 15 ms once left a sanitizer build 6 short), one completes the run and cancels
+# the rest; the history equals a straight run's
 check_resume() {
   local total=70
-  write_config "$work/resume.ini" $total 15000
+  write_config "$work/resume.ini" $total 20000
   # the straight run, in process, beside the chain (results do not depend on rank count)
   "$cambrian" evolve --config "$work/resume.ini" --out "$work/straight" --quiet \
     > "$work/straight.txt" 2>&1 &
