@@ -508,8 +508,8 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
   const int part_count = static_cast<int>(plan.parts.size());
 
   // sensors: per part its joint angles, its contact (or six, one per face) and, with
-  // photosensors on every part, its three photo sensors; then the creature's three photo
-  // sensors
+  // photosensors on every part (or on this photosensitive one), its three photo sensors; then
+  // the creature's three photo sensors
   Ranges ranges;
   ranges.sensor_first.resize(part_count);
   ranges.sensor_count.resize(part_count);
@@ -524,7 +524,10 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
     } else {
       plan.sensors.push_back(SensorPlan{SensorKind::contact, i, 0});
     }
-    if (limits.photosensors == Photosensors::every_part) {
+    const bool photosensitive =
+        limits.photosensors == Photosensors::every_part ||
+        (limits.photosensors == Photosensors::chosen && genome.nodes[plan.parts[i].node].photosensitive);
+    if (photosensitive) {
       for (int axis = 0; axis < 3; ++axis)
         plan.sensors.push_back(SensorPlan{SensorKind::photo, i, axis});
     }

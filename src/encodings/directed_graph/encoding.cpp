@@ -105,10 +105,14 @@ void DirectedGraphEncoding::declareSettings(SettingsSchema& s) {
               "smaller | larger (Chaumont et al.'s 'cross section of the bigger block', after "
               "Sims)");
   s.addChoice("genome.photosensors", g.photosensors,
-              {{"root", Photosensors::root}, {"every_part", Photosensors::every_part}},
+              {{"root", Photosensors::root},
+               {"every_part", Photosensors::every_part},
+               {"chosen", Photosensors::chosen}},
               "the parts with photosensors: root (three for the whole creature) | every_part "
-              "(three more on each part, in its own frame, read by its neurons as local sensors: "
-              "Sims' photosensors 'relative to the orientation of the photosensitive part')");
+              "(three more on each part, in its own frame, read by its neurons as local sensors) "
+              "| chosen (three more on each part whose gene is photosensitive, a flag random "
+              "genomes draw and mutation flips: Sims' photosensors 'relative to the orientation "
+              "of the photosensitive part')");
   s.add("genome.catapult", g.catapult,
         "Chaumont et al.'s catapults: the root part is an arm holding a projectile it lets go of "
         "after genome.release_delay controller steps, or earlier on the network's signal");

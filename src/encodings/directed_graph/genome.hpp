@@ -102,6 +102,8 @@ struct PartGene {
   double segment_shrink = 1;  ///< multiplies the size of every part branched from this one
   /// the joint's damping per degree of freedom, N m s / rad; negative: physics.joint_damping
   Vec3 joint_damping{-1, -1, -1};
+  /// Sims: this part carries three photosensors (read only under genome.photosensors = chosen)
+  bool photosensitive = false;
   friend bool operator==(const PartGene&, const PartGene&) = default;
 };
 
@@ -155,7 +157,8 @@ enum class ContactSensors : std::uint8_t {
 /// Where development puts photosensors (genome.photosensors).
 enum class Photosensors : std::uint8_t {
   root,        ///< three for the whole creature, on the root (read through brain_sensor)
-  every_part,  ///< those, and three more on every part, read like its other local sensors (Sims)
+  every_part,  ///< those, and three more on every part, read like its other local sensors
+  chosen,      ///< those, and three more on each part whose gene is photosensitive (Sims)
 };
 
 /// Which of the two faces meeting at a joint gives its strength (genome.strength_section).
@@ -235,7 +238,7 @@ void validateGenome(const Genome& genome, const GenomeLimits& limits);
 /// joint controllers; 4: morphogene fields after the projectile). Readers accept this and older
 /// versions; a genome is written in the oldest version that carries it (1 without a projectile or a
 /// chaotic controller).
-constexpr std::uint32_t kGenomeFormatVersion = 4;
+constexpr std::uint32_t kGenomeFormatVersion = 5;
 
 /// The tag that starts the byte form.
 constexpr std::array<char, 4> kGenomeTag = {'C', 'M', 'B', 'G'};

@@ -92,19 +92,22 @@ class Perturber {
     for (EffectorGene& e : p.effectors)
       input(e.input);
 
-    // Minemonics' morphogene, last (without it a node draws what it always drew)
-    if (!limits_.morphogenes)
-      return;
-    redraw(p.shape, kPartShapeCount);
-    number(p.friction, limits_.min_friction, limits_.max_friction);
-    if (p.restitution != kWorldRestitution)
-      number(p.restitution, limits_.min_restitution, limits_.max_restitution);
-    vec3(p.anchor, -kPositionBound, kPositionBound);
-    number(p.segment_shrink, limits_.min_shrink, limits_.max_shrink);
-    for (int k = 0; k < 3; ++k) {
-      if (p.joint_damping[k] != kWorldDamping)
-        number(p.joint_damping[k], limits_.min_joint_damping, limits_.max_joint_damping);
+    // Minemonics' morphogene, then Sims' photosensitive parts, last (without them a node draws
+    // what it always drew)
+    if (limits_.morphogenes) {
+      redraw(p.shape, kPartShapeCount);
+      number(p.friction, limits_.min_friction, limits_.max_friction);
+      if (p.restitution != kWorldRestitution)
+        number(p.restitution, limits_.min_restitution, limits_.max_restitution);
+      vec3(p.anchor, -kPositionBound, kPositionBound);
+      number(p.segment_shrink, limits_.min_shrink, limits_.max_shrink);
+      for (int k = 0; k < 3; ++k) {
+        if (p.joint_damping[k] != kWorldDamping)
+          number(p.joint_damping[k], limits_.min_joint_damping, limits_.max_joint_damping);
+      }
     }
+    if (limits_.photosensors == Photosensors::chosen)
+      flip(p.photosensitive);
   }
 
   void connection(ConnectionGene& c) {

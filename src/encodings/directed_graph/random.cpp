@@ -96,6 +96,9 @@ PartGene randomPartGene(const GenomeLimits& limits, Rng& rng) {
     for (int k = 0; k < 3; ++k)
       node.joint_damping[k] = rng.uniform(limits.min_joint_damping, limits.max_joint_damping);
   }
+  // Sims' photosensitive parts, drawn after that (without them a node draws what it always drew)
+  if (limits.photosensors == Photosensors::chosen)
+    node.photosensitive = rng.bernoulli(0.5);
   return node;
 }
 

@@ -71,7 +71,14 @@ std::uint32_t oldestVersionCarrying(const Genome& genome) {
   const bool chaotic = std::any_of(
       genome.connections.begin(), genome.connections.end(),
       [](const ConnectionGene& c) { return c.controller.kind == JointControllerKind::chaotic; });
-  return hasMorphogeneFields(genome) ? 4 : chaotic ? 3 : genome.projectile ? 2 : 1;
+  const bool photosensitive =
+      std::any_of(genome.nodes.begin(), genome.nodes.end(),
+                  [](const PartGene& node) { return node.photosensitive; });
+  return photosensitive                ? 5
+         : hasMorphogeneFields(genome) ? 4
+         : chaotic                     ? 3
+         : genome.projectile           ? 2
+                                       : 1;
 }
 
 }  // namespace
@@ -147,6 +154,12 @@ std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
     }
     for (const ConnectionGene& c : genome.connections)
       w.u8(static_cast<std::uint8_t>((c.flip ? 1 : 0) | (c.mirror ? 2 : 0)));
+  }
+
+  // (version 5) whether each node is photosensitive
+  if (version >= 5) {
+    for (const PartGene& node : genome.nodes)
+      w.u8(node.photosensitive ? 1 : 0);
   }
   return out;
 }
@@ -245,6 +258,12 @@ Genome deserializeGenome(const std::uint8_t* bytes, std::size_t size) {
       const std::uint8_t bits = r.upTo("flip and mirror", 3);
       genome.connections[i].flip = (bits & 1) != 0;
       genome.connections[i].mirror = (bits & 2) != 0;
+    }
+  }
+  if (version >= 5) {
+    for (std::size_t i = 0; i < genome.nodes.size(); ++i) {
+      r.context("node " + std::to_string(i) + " photosensitive");
+      genome.nodes[i].photosensitive = r.upTo("photosensitive", 1) != 0;
     }
   }
   r.context("end");

@@ -140,7 +140,7 @@ void parseNeuronFields(Line& line, NeuronGene& neuron) {
 }
 
 // node fields: shape, size, density, joint, limit, recursion, friction, restitution, anchor,
-// shrink, damping
+// shrink, damping, photosensitive (a flag)
 void parseNodeFields(Line& line, PartGene& node) {
   while (line.more()) {
     std::string_view key = line.next("node field", "a field");
@@ -167,10 +167,12 @@ void parseNodeFields(Line& line, PartGene& node) {
       node.segment_shrink = line.number("shrink");
     } else if (key == "damping") {
       node.joint_damping = line.vec3("damping");
+    } else if (key == "photosensitive") {
+      node.photosensitive = true;
     } else {
       line.fail("unknown node field '" + std::string(key) +
                 "' (shape, size, density, joint, limit, recursion, friction, restitution, "
-                "anchor, shrink, damping)");
+                "anchor, shrink, damping, photosensitive)");
     }
   }
 }
@@ -303,6 +305,8 @@ std::string genomeToText(const Genome& genome) {
       out << " shrink " << formatNumber(node.segment_shrink);
     if (!sameBits(node.joint_damping, sims_part.joint_damping))
       out << " damping " << vec3Text(node.joint_damping);
+    if (node.photosensitive)
+      out << " photosensitive";
     out << "\n";
     for (const NeuronGene& neuron : node.neurons)
       writeNeuron(out, neuron);

@@ -816,5 +816,42 @@ TEST(Develop, ChaoticJointControllersFollowTheNetwork) {
   EXPECT_EQ(develop(g, limits).controller->kind(), "network+sine+chaotic");
 }
 
+// chosen photosensors: three on each photosensitive part only (where every_part would put
+// them); root and every_part ignore the flag
+TEST(Develop, PhotosensorsOnTheChosenParts) {
+  Genome g;
+  g.nodes.push_back(box({0.4, 0.4, 0.2}, JointType::fixed));
+  g.nodes.push_back(box({0.3, 0.1, 0.1}));
+  g.connections.push_back(link(0, 1, {1, 0, 0}));
+  g.connections.push_back(link(0, 1, {-1, 0, 0}));
+  g.nodes[1].photosensitive = true;
+  GenomeLimits limits;
+  limits.photosensors = Photosensors::chosen;
+  const BodyPlan chosen = develop(g, limits).body;
+  // root: contact; each child: angle, contact, photo x3; the creature's photo x3
+  const SensorKind kinds[] = {SensorKind::contact,     SensorKind::joint_angle, SensorKind::contact,
+                              SensorKind::photo,       SensorKind::photo,       SensorKind::photo,
+                              SensorKind::joint_angle, SensorKind::contact,     SensorKind::photo,
+                              SensorKind::photo,       SensorKind::photo,       SensorKind::photo,
+                              SensorKind::photo,       SensorKind::photo};
+  ASSERT_EQ(chosen.sensors.size(), std::size(kinds));
+  for (std::size_t s = 0; s < chosen.sensors.size(); ++s)
+    EXPECT_EQ(chosen.sensors[s].kind, kinds[s]) << s;
+  EXPECT_EQ(chosen.sensors[3].part, 1);
+  EXPECT_EQ(chosen.sensors[10].part, 2);
+  EXPECT_EQ(chosen.sensors[11].part, 0);
+  Genome plain = g;
+  plain.nodes[1].photosensitive = false;
+  for (const Photosensors where : {Photosensors::root, Photosensors::every_part}) {
+    limits.photosensors = where;
+    const BodyPlan a = develop(g, limits).body, b = develop(plain, limits).body;
+    ASSERT_EQ(a.sensors.size(), b.sensors.size());
+    for (std::size_t s = 0; s < a.sensors.size(); ++s)
+      EXPECT_TRUE(a.sensors[s].kind == b.sensors[s].kind && a.sensors[s].part == b.sensors[s].part &&
+                  a.sensors[s].axis == b.sensors[s].axis)
+          << s;
+  }
+}
+
 }  // namespace
 }  // namespace cambrian::graph

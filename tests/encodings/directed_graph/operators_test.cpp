@@ -360,5 +360,33 @@ TEST(Operators, ChaoticControllersStayChaoticAndValid) {
   EXPECT_GT(moved, 100);
 }
 
+// mutation flips a node's photosensitive flag under genome.photosensors = chosen, never otherwise
+TEST(Operators, MutationFlipsPhotosensitivePartsOnlyWhereTheGenomeChooses) {
+  GenomeLimits chosen;
+  chosen.photosensors = Photosensors::chosen;
+  int flipped = 0;
+  for (std::uint64_t i = 0; i < 100; ++i) {
+    const Genome parent = randomGenome(chosen, 75, 0, i);
+    Rng rng(75, RngPurpose::variation, 1, i);
+    const Genome child = mutate(parent, chosen, aggressive(true), rng);
+    ASSERT_NO_THROW(validateGenome(child, chosen));
+    // nodes keep their places unless mutation adds or removes some
+    if (child.nodes.size() == parent.nodes.size()) {
+      for (std::size_t n = 0; n < child.nodes.size(); ++n)
+        flipped += child.nodes[n].photosensitive != parent.nodes[n].photosensitive;
+    }
+    // elsewhere no node becomes photosensitive
+    const Genome plain = randomGenome(GenomeLimits{}, 75, 0, i);
+    for (const Photosensors where : {Photosensors::root, Photosensors::every_part}) {
+      GenomeLimits limits;
+      limits.photosensors = where;
+      Rng plain_rng(75, RngPurpose::variation, 1, i);
+      for (const PartGene& node : mutate(plain, limits, aggressive(true), plain_rng).nodes)
+        ASSERT_FALSE(node.photosensitive) << i;
+    }
+  }
+  EXPECT_GT(flipped, 20);
+}
+
 }  // namespace
 }  // namespace cambrian::graph

@@ -165,5 +165,25 @@ TEST(RandomGenome, ChaoticControllersOnEveryJoint) {
   EXPECT_NEAR(static_cast<double>(slow) / (slow + fast), 0.5, 0.05);
 }
 
+// Sims' photosensitive parts: drawn with probability 1/2, only under genome.photosensors =
+// chosen (elsewhere a node draws what it always drew)
+TEST(RandomGenome, PhotosensitivePartsOnlyWhereTheGenomeChooses) {
+  GenomeLimits chosen;
+  chosen.photosensors = Photosensors::chosen;
+  int nodes = 0, photosensitive = 0;
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    const Genome g = randomGenome(chosen, 62, 0, i);
+    ASSERT_NO_THROW(validateGenome(g, chosen));
+    for (const PartGene& node : g.nodes) {
+      ++nodes;
+      photosensitive += node.photosensitive;
+    }
+    const Genome plain = randomGenome(GenomeLimits{}, 62, 0, i);
+    for (const PartGene& node : plain.nodes)
+      ASSERT_FALSE(node.photosensitive);
+  }
+  EXPECT_NEAR(static_cast<double>(photosensitive) / nodes, 0.5, 0.05);
+}
+
 }  // namespace
 }  // namespace cambrian::graph

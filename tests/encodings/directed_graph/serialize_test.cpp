@@ -161,7 +161,7 @@ TEST(SerializeGenome, BadMagic) {
 TEST(SerializeGenome, NewerVersion) {
   std::vector<std::uint8_t> bytes = serializeGenome(randomGenome(GenomeLimits{}, 1));
   bytes[4] = 9;
-  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (4)");
+  EXPECT_EQ(failure(bytes), "genome bytes: format version 9 is newer than this cambrian (5)");
   bytes[4] = 0;
   EXPECT_NE(failure(bytes).find("version 0"), std::string::npos);
 }
@@ -280,6 +280,36 @@ TEST(Serialize, OnlyTheOldestVersionThatCarriesAGenomeIsRead) {
   bytes[4] = 2;
   bytes.push_back(0);  // "no projectile"
   EXPECT_NE(failure(bytes).find("nothing in it needs a later version"), std::string::npos)
+      << failure(bytes);
+}
+
+// a photosensitive node needs version 5; version 5 bytes without one are refused, and the
+// flag's byte is 0 or 1
+TEST(Serialize, PhotosensitivePartsNeedVersionFive) {
+  GenomeLimits limits;
+  limits.photosensors = Photosensors::chosen;
+  Genome g = randomGenome(limits, 5, 0, 1);
+  g.nodes[0].photosensitive = true;
+  std::vector<std::uint8_t> bytes = serializeGenome(g);
+  ASSERT_EQ(bytes[4], 5);
+  EXPECT_EQ(deserializeGenome(bytes.data(), bytes.size()), g);
+  std::vector<std::uint8_t> two = bytes;
+  two[two.size() - g.nodes.size()] = 2;  // node 0's flag
+  EXPECT_NE(failure(two).find("photosensitive"), std::string::npos) << failure(two);
+  for (PartGene& node : g.nodes)
+    node.photosensitive = false;
+  bytes = serializeGenome(g);
+  ASSERT_LT(bytes[4], 5);
+  // the same genome in version 5 bytes (version 4's fields and every flag 0)
+  GenomeLimits morphogenes;
+  morphogenes.morphogenes = true;
+  Genome m = randomGenome(morphogenes, 5, 0, 2);
+  m.nodes[0].photosensitive = true;
+  bytes = serializeGenome(m);
+  ASSERT_EQ(bytes[4], 5);
+  bytes[bytes.size() - m.nodes.size()] = 0;
+  EXPECT_NE(failure(bytes).find("format version 5, but this genome is written as version 4"),
+            std::string::npos)
       << failure(bytes);
 }
 

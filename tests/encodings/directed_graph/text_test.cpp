@@ -329,5 +329,22 @@ TEST(Text, AChaoticControllerIsOneLine) {
   EXPECT_EQ(c.chua_speed, 4);
 }
 
+// a photosensitive node is one word on its line, and round-trips
+TEST(Text, APhotosensitivePartIsOneWord) {
+  GenomeLimits limits;
+  limits.photosensors = Photosensors::chosen;
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    const Genome genome = randomGenome(limits, 52, 0, i);
+    const std::string text = genomeToText(genome);
+    ASSERT_EQ(parseGenomeText(text), genome) << text;
+  }
+  const Genome g = parseGenomeText(
+      "cambrian-genome 2\nnode 0 size 0.4 0.4 0.2 photosensitive\nnode 1 size 0.3 0.1 0.1\n"
+      "connection 0 -> 1\nend\n");
+  EXPECT_TRUE(g.nodes[0].photosensitive);
+  EXPECT_FALSE(g.nodes[1].photosensitive);
+  EXPECT_NE(genomeToText(g).find("photosensitive"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace cambrian::graph
