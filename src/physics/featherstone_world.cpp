@@ -528,7 +528,7 @@ void FeatherstoneWorld::build(double birth_height) {
   body.setHasSelfCollision(true);
   body.setLinearDamping(0);
   body.setAngularDamping(0);
-  body.setMaxCoordinateVelocity(100);
+  body.setMaxCoordinateVelocity(physics_.joint_speed_clamp);
 
   // links: walk the parts in plan order (parents first)
   dof_link_.assign(part_count, {-1, -1, -1});

@@ -106,8 +106,16 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
                "must be > 0 and finite");
   s.add("physics.max_joint_speed", p.max_joint_speed,
         "a joint turning faster than this has exploded, rad/s (sliders m/s; 0 = not watched)")
-      .require([&p] { return p.max_joint_speed >= 0 && p.max_joint_speed < 100; },
-               "must be in [0, 100) (0 = not watched; Bullet clamps joint speeds at 100)");
+      .require([&p] { return p.max_joint_speed >= 0 && p.max_joint_speed < p.joint_speed_clamp; },
+               "must be in [0, physics.joint_speed_clamp) (0 = not watched; no joint turns "
+               "faster than the clamp)");
+  s.add("physics.joint_speed_clamp", p.joint_speed_clamp,
+        "the Featherstone world holds every joint's speed (and the root's velocity and spin) to "
+        "this when the solver's impulses are applied, rad/s (sliders m/s); the clamp does not "
+        "conserve momentum, so a body held at it is pushed by nothing")
+      .require([&p] { return p.joint_speed_clamp > 0 && p.joint_speed_clamp <= 1e6; },
+               "must be in (0, 1e6]")
+      .earlierRunsUsed("100");
   s.add("physics.max_angular_speed", p.max_angular_speed,
         "a part turning faster than this has exploded, rad/s (0 = not watched)")
       .require([&p] { return p.max_angular_speed >= 0 && std::isfinite(p.max_angular_speed); },

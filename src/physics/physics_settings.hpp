@@ -91,8 +91,16 @@ struct PhysicsSettings {
   double max_speed = 50;          ///< m / s: any part faster has exploded
   double max_displacement = 100;  ///< m: any part farther from its start has exploded
   /// rad/s (prismatic: m/s): a joint turning faster has exploded (Minemonics discards creatures
-  /// of "very high joint velocities"); 0: not watched. Bullet clamps every joint's speed at 100.
+  /// of "very high joint velocities"); 0: not watched. Less than joint_speed_clamp.
   double max_joint_speed = 0;
+  /// rad/s (prismatic: m/s; also m/s and rad/s for the root's velocity and spin): the Featherstone
+  /// world's multibody holds every coordinate's speed to this when the solver's impulses are
+  /// applied (btMultiBody's coordinate velocity clamp). The clamp does not conserve momentum: a
+  /// limb driven into its limit or the ground at the clamp pushes the body with nothing. Runs
+  /// stored before this key used Bullet's 100 rad/s, which evolution under explicit torques
+  /// reached in every step of a stroke and rode 95 m in 10 s (docs/physics-and-tasks.md, "No push
+  /// from the speed clamp").
+  double joint_speed_clamp = 1000;
   /// rad/s: a part turning faster has exploded (the springy organisms' "maximal allowed angular
   /// velocity"); 0: not watched
   double max_angular_speed = 0;

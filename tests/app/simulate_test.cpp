@@ -306,5 +306,28 @@ TEST(InspectCommand, PrintsSeveralGenomesEachAfterItsName) {
   EXPECT_NE(bad.output.find("/dev/zero"), std::string::npos) << bad.output;
 }
 
+// Bullet's joint speed clamp pushes a body by nothing: the clamp rider (tests/physics/data) went
+// 95 m in 10 s under the old clamp of 100 rad/s and goes a few metres with the clamp out of reach
+TEST(SimulateCommand, TheClampRiderNoLongerRides) {
+  const std::string rider = "simulate --genome " + std::string(CAMBRIAN_SOURCE_DIR) +
+                            "/tests/physics/data/clamp_rider.genome --config " +
+                            std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/experiments/sims.ini";
+  auto fitness = [](const std::string& output) {
+    const std::string line = lineStartingWith(output, "fitness");
+    return line.empty() ? -1.0 : std::stod(line.substr(std::string("fitness").size()));
+  };
+  auto now = runCambrian(rider);
+  ASSERT_EQ(now.exit_code, 0) << now.output;
+  EXPECT_EQ(lineStartingWith(now.output, "status"), "status     ok") << now.output;
+  EXPECT_LT(fitness(now.output), 10) << now.output;
+  auto clamped = runCambrian(rider + " --physics.joint_speed_clamp 100");
+  ASSERT_EQ(clamped.exit_code, 0) << clamped.output;
+  EXPECT_GT(fitness(clamped.output), 50) << clamped.output;
+  // and no joint may be watched at or above the clamp
+  auto watched = runCambrian(rider + " --physics.joint_speed_clamp 100 --physics.max_joint_speed 100");
+  EXPECT_EQ(watched.exit_code, code(ExitCode::config)) << watched.output;
+  EXPECT_NE(watched.output.find("physics.max_joint_speed"), std::string::npos) << watched.output;
+}
+
 }  // namespace
 }  // namespace cambrian

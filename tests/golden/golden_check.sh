@@ -19,8 +19,9 @@
 #   resume_v1: a run checkpointed by the cambrian of before the plug-in renovation
 #              (tests/store/data/v1_run: history.h5 and a version-1 checkpoint.h5 after 3 of 5
 #              generations) resumed at NP ranks: the digest of the straight run of that cambrian.
-#              Its physics predates friction anchors, contact slop, the energy watch and the
-#              solved middle axis of spherical joints: with the
+#              Its physics predates friction anchors, contact slop, the energy watch, the
+#              solved middle axis of spherical joints and the joint speed clamp's 1,000 rad/s:
+#              with the
 #              defaults of its day but not those, the run is refused (exit 6, naming the values
 #              that continue it); with them it continues bit for bit
 # Every name's line in expected.txt is "NAME VALUE"; the same NAME must give the same VALUE at
@@ -237,12 +238,13 @@ case $mode in
     code=0
     timeout -k 10 "$limit" "${launch[@]}" "$cambrian" evolve --quiet --out "$work/resume_v1" \
       "${evolve_args[@]}" > /dev/null 2> "$work/resume_v1.refused" || code=$?
-    [ "$code" -eq 6 ] && grep -q "set physics.contact_slop = 0, physics.friction_anchors = false, physics.implicit_damping = false, physics.max_energy_gain = 0, physics.solve_every_dof = false, physics.solver_tolerance = 0 to continue" \
+    [ "$code" -eq 6 ] && grep -q "set physics.contact_slop = 0, physics.friction_anchors = false, physics.implicit_damping = false, physics.joint_speed_clamp = 100, physics.max_energy_gain = 0, physics.solve_every_dof = false, physics.solver_tolerance = 0 to continue" \
       "$work/resume_v1.refused" ||
       fail "resume_v1 under today's physics: exit $code, not 6 naming physics.friction_anchors: $(head -n 3 "$work/resume_v1.refused")"
     evolve_args+=(--physics.friction_anchors false --physics.contact_slop 0
-                  --physics.implicit_damping false --physics.max_energy_gain 0
-                  --physics.solve_every_dof false --physics.solver_tolerance 0)
+                  --physics.implicit_damping false --physics.joint_speed_clamp 100
+                  --physics.max_energy_gain 0 --physics.solve_every_dof false
+                  --physics.solver_tolerance 0)
     timeout -k 10 "$limit" "${launch[@]}" "$cambrian" evolve --quiet --out "$work/resume_v1" \
       "${evolve_args[@]}" > "$work/resume_v1.out" 2> "$work/resume_v1.err" ||
       fail "resume_v1: exit code $?; stderr: $(head -n 5 "$work/resume_v1.err")"
