@@ -60,13 +60,15 @@ TEST(AuditCommand, CreepersAreCaughtAndGone) {
 }
 
 // the body a zero-strength evolution selected under explicit joint damping creeps with it (and
-// with the free middle axis of its spherical joint, as then: physics.solve_every_dof = false), and
-// keeps still with the damping solved implicitly (the default)
+// with the free middle axis of its spherical joint and Bullet's joint speed clamp, as then:
+// physics.solve_every_dof = false, physics.joint_speed_clamp = 100), and keeps still with the
+// damping solved implicitly (the default)
 TEST(AuditCommand, TheDampingCreeperKeepsStillUnderImplicitDamping) {
   std::string body = " --random 0 --driven 0 --genome " + fixture("damping_creeper");
   auto explicit_damping = runCambrian("audit" + body +
                                       " --physics.implicit_damping false"
-                                      " --physics.solve_every_dof false");
+                                      " --physics.solve_every_dof false"
+                                      " --physics.joint_speed_clamp 100");
   EXPECT_EQ(explicit_damping.exit_code, code(ExitCode::audit_failed)) << explicit_damping.output;
   EXPECT_NE(explicit_damping.output.find("damping_creeper.genome: crept"), std::string::npos)
       << explicit_damping.output;

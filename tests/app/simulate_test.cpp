@@ -308,23 +308,32 @@ TEST(InspectCommand, PrintsSeveralGenomesEachAfterItsName) {
 
 // Bullet's joint speed clamp pushes a body by nothing: the clamp rider (tests/physics/data) went
 // 95 m in 10 s under the old clamp of 100 rad/s and goes a few metres with the clamp out of reach
+// (its joints unwatched); sims.ini's joint-speed watch ends it
 TEST(SimulateCommand, TheClampRiderNoLongerRides) {
   const std::string rider = "simulate --genome " + std::string(CAMBRIAN_SOURCE_DIR) +
                             "/tests/physics/data/clamp_rider.genome --config " +
                             std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/experiments/sims.ini";
+  const std::string unwatched = rider + " --physics.max_joint_speed 0";
   auto fitness = [](const std::string& output) {
     const std::string line = lineStartingWith(output, "fitness");
     return line.empty() ? -1.0 : std::stod(line.substr(std::string("fitness").size()));
   };
-  auto now = runCambrian(rider);
+  auto now = runCambrian(unwatched);
   ASSERT_EQ(now.exit_code, 0) << now.output;
   EXPECT_EQ(lineStartingWith(now.output, "status"), "status     ok") << now.output;
   EXPECT_LT(fitness(now.output), 10) << now.output;
-  auto clamped = runCambrian(rider + " --physics.joint_speed_clamp 100");
+  auto clamped = runCambrian(unwatched + " --physics.joint_speed_clamp 100");
   ASSERT_EQ(clamped.exit_code, 0) << clamped.output;
   EXPECT_GT(fitness(clamped.output), 50) << clamped.output;
+  // sims.ini as shipped watches its joints (50 rad/s) and ends the rider as exploded
+  auto shipped = runCambrian(rider);
+  ASSERT_EQ(shipped.exit_code, 0) << shipped.output;
+  EXPECT_NE(lineStartingWith(shipped.output, "status").find("physics.max_joint_speed 50"),
+            std::string::npos)
+      << shipped.output;
   // and no joint may be watched at or above the clamp
-  auto watched = runCambrian(rider + " --physics.joint_speed_clamp 100 --physics.max_joint_speed 100");
+  auto watched =
+      runCambrian(rider + " --physics.joint_speed_clamp 100 --physics.max_joint_speed 100");
   EXPECT_EQ(watched.exit_code, code(ExitCode::config)) << watched.output;
   EXPECT_NE(watched.output.find("physics.max_joint_speed"), std::string::npos) << watched.output;
 }

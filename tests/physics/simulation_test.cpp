@@ -170,12 +170,20 @@ TEST(Simulation, SaturatedMotorWithAbsurdStrengthStaysFinite) {
 }
 
 // an absurdly strong explicit torque breaks the physics and is caught as a status, not a crash:
-// by the energy watch first, by the speed monitor when the watch is off
+// with the joint held to Bullet's old speed clamp (100 rad/s) by the energy watch, by the speed
+// monitor when the watch is off, and by the speed monitor at the first step with the clamp out of
+// reach (the default)
 TEST(Simulation, ExplosionIsCaught) {
   TestCreature creature = hinged(1.0);
   PhysicsSettings settings;
   settings.actuation = Actuation::torque;
   settings.strength_per_area = 1e12;
+  Sim unclamped(creature, settings);
+  unclamped.simulation.step(true);
+  EXPECT_EQ(unclamped.simulation.status(), EvalStatus::exploded);
+  EXPECT_NE(unclamped.simulation.message().find("physics.max_speed"), std::string::npos)
+      << unclamped.simulation.message();
+  settings.joint_speed_clamp = 100;
   Sim watched(creature, settings);
   for (int s = 0; s < 2400 && watched.simulation.status() == EvalStatus::ok; ++s)
     watched.simulation.step(true);

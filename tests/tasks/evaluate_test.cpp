@@ -339,7 +339,8 @@ std::vector<std::pair<std::string, std::string>> evolvedOn(
   return more;
 }
 // ... and under the physics of their day: before friction anchors, contact slop, implicit joint
-// damping, the energy watch, the solved middle axis of spherical joints and the solver tolerance
+// damping, the energy watch, the solved middle axis of spherical joints, the solver tolerance and
+// the joint speed clamp out of reach
 std::vector<std::pair<std::string, std::string>> earlierPhysics(
     std::vector<std::pair<std::string, std::string>> more = {}) {
   more.insert(more.end(), {{"physics.friction_anchors", "false"},
@@ -347,7 +348,8 @@ std::vector<std::pair<std::string, std::string>> earlierPhysics(
                            {"physics.implicit_damping", "false"},
                            {"physics.max_energy_gain", "0"},
                            {"physics.solve_every_dof", "false"},
-                           {"physics.solver_tolerance", "0"}});
+                           {"physics.solver_tolerance", "0"},
+                           {"physics.joint_speed_clamp", "100"}});
   return evolvedOn(more);
 }
 

@@ -524,9 +524,9 @@ Creature develop(const Genome& genome, const GenomeLimits& limits) {
     } else {
       plan.sensors.push_back(SensorPlan{SensorKind::contact, i, 0});
     }
-    const bool photosensitive =
-        limits.photosensors == Photosensors::every_part ||
-        (limits.photosensors == Photosensors::chosen && genome.nodes[plan.parts[i].node].photosensitive);
+    const bool photosensitive = limits.photosensors == Photosensors::every_part ||
+                                (limits.photosensors == Photosensors::chosen &&
+                                 genome.nodes[plan.parts[i].node].photosensitive);
     if (photosensitive) {
       for (int axis = 0; axis < 3; ++axis)
         plan.sensors.push_back(SensorPlan{SensorKind::photo, i, axis});

@@ -71,9 +71,8 @@ std::uint32_t oldestVersionCarrying(const Genome& genome) {
   const bool chaotic = std::any_of(
       genome.connections.begin(), genome.connections.end(),
       [](const ConnectionGene& c) { return c.controller.kind == JointControllerKind::chaotic; });
-  const bool photosensitive =
-      std::any_of(genome.nodes.begin(), genome.nodes.end(),
-                  [](const PartGene& node) { return node.photosensitive; });
+  const bool photosensitive = std::any_of(genome.nodes.begin(), genome.nodes.end(),
+                                          [](const PartGene& node) { return node.photosensitive; });
   return photosensitive                ? 5
          : hasMorphogeneFields(genome) ? 4
          : chaotic                     ? 3

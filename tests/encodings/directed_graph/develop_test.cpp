@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -752,6 +753,13 @@ TEST(Develop, TheArmHoldsTheProjectile) {
   EXPECT_TRUE(develop(g, limits).body.held.empty());
 }
 
+// the plan's sensors are of these kinds, in this order
+void expectSensorKinds(const BodyPlan& plan, std::span<const SensorKind> kinds) {
+  ASSERT_EQ(plan.sensors.size(), kinds.size());
+  for (std::size_t s = 0; s < kinds.size(); ++s)
+    EXPECT_EQ(plan.sensors[s].kind, kinds[s]) << s;
+}
+
 // photosensors on every part: three more per part, after its contact sensor, each in its own
 // part's frame; a part's local_sensor inputs reach them; the creature's three stay last
 TEST(Develop, PhotosensorsOnEveryPart) {
@@ -769,9 +777,7 @@ TEST(Develop, PhotosensorsOnEveryPart) {
                               SensorKind::photo,   SensorKind::joint_angle, SensorKind::contact,
                               SensorKind::photo,   SensorKind::photo,       SensorKind::photo,
                               SensorKind::photo,   SensorKind::photo,       SensorKind::photo};
-  ASSERT_EQ(every.sensors.size(), std::size(kinds));
-  for (std::size_t s = 0; s < every.sensors.size(); ++s)
-    EXPECT_EQ(every.sensors[s].kind, kinds[s]) << s;
+  expectSensorKinds(every, kinds);
   EXPECT_EQ(every.sensors[6].part, 1);
   EXPECT_EQ(every.sensors[8].axis, 2);
   EXPECT_EQ(every.sensors[9].part, 0);
@@ -834,9 +840,7 @@ TEST(Develop, PhotosensorsOnTheChosenParts) {
                               SensorKind::joint_angle, SensorKind::contact,     SensorKind::photo,
                               SensorKind::photo,       SensorKind::photo,       SensorKind::photo,
                               SensorKind::photo,       SensorKind::photo};
-  ASSERT_EQ(chosen.sensors.size(), std::size(kinds));
-  for (std::size_t s = 0; s < chosen.sensors.size(); ++s)
-    EXPECT_EQ(chosen.sensors[s].kind, kinds[s]) << s;
+  expectSensorKinds(chosen, kinds);
   EXPECT_EQ(chosen.sensors[3].part, 1);
   EXPECT_EQ(chosen.sensors[10].part, 2);
   EXPECT_EQ(chosen.sensors[11].part, 0);
@@ -847,8 +851,8 @@ TEST(Develop, PhotosensorsOnTheChosenParts) {
     const BodyPlan a = develop(g, limits).body, b = develop(plain, limits).body;
     ASSERT_EQ(a.sensors.size(), b.sensors.size());
     for (std::size_t s = 0; s < a.sensors.size(); ++s)
-      EXPECT_TRUE(a.sensors[s].kind == b.sensors[s].kind && a.sensors[s].part == b.sensors[s].part &&
-                  a.sensors[s].axis == b.sensors[s].axis)
+      EXPECT_TRUE(a.sensors[s].kind == b.sensors[s].kind &&
+                  a.sensors[s].part == b.sensors[s].part && a.sensors[s].axis == b.sensors[s].axis)
           << s;
   }
 }
