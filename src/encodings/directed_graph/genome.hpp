@@ -235,9 +235,10 @@ Genome randomGenome(const GenomeLimits& limits, std::uint64_t seed, std::uint64_
 void validateGenome(const Genome& genome, const GenomeLimits& limits);
 
 /// Current version of the byte format (2: a catapult's projectile after the brain; 3: chaotic
-/// joint controllers; 4: morphogene fields after the projectile). Readers accept this and older
-/// versions; a genome is written in the oldest version that carries it (1 without a projectile or a
-/// chaotic controller).
+/// joint controllers; 4: morphogene fields after the projectile; 5: each node's photosensitive
+/// flag after those). Readers accept this and older versions; a genome is written in the oldest
+/// version that carries it (1 without a projectile, a chaotic controller, a morphogene field or a
+/// photosensitive node).
 constexpr std::uint32_t kGenomeFormatVersion = 5;
 
 /// The tag that starts the byte form.
