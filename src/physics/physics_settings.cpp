@@ -87,6 +87,19 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
   s.add("physics.contact_erp", p.contact_erp,
         "share of a contact's overlap beyond the slop removed per Bullet step (Bullet's erp2)")
       .require([&p] { return p.contact_erp >= 0 && p.contact_erp <= 1; }, "must be in [0, 1]");
+  s.add("physics.global_cfm", p.global_cfm,
+        "ODE's global constraint force mixing at physics.time_step, m/(N s): the rigid-body "
+        "world's joint, motor, contact and friction rows become springs of stiffness "
+        "global_erp / (time_step global_cfm) and dampers of (1 - global_erp) / global_cfm, the "
+        "same at any substeps (physics.global_erp then replaces joint_erp and contact_erp); 0: "
+        "rigid rows")
+      .require([&p] { return p.global_cfm >= 0 && p.global_cfm <= 1; }, "must be in [0, 1]")
+      .require([&p] { return p.global_cfm == 0 || p.world == "rigid_bodies"; },
+               "is built in physics.world = rigid_bodies only (0 elsewhere)");
+  s.add("physics.global_erp", p.global_erp,
+        "ODE's global error reduction at physics.time_step: with physics.global_cfm the rows' "
+        "stiffness")
+      .require([&p] { return p.global_erp > 0 && p.global_erp < 1; }, "must be in (0, 1)");
   s.add("physics.solver_tolerance", p.solver_tolerance,
         "stop iterating once no constraint row changes a velocity by more than this, m/s (0: "
         "always physics.solver_iterations)")

@@ -83,6 +83,14 @@ struct PhysicsSettings {
   double joint_erp = 0.2;
   /// Share of a contact's overlap (beyond contact_slop) removed per Bullet step (Bullet's erp2).
   double contact_erp = 0.2;
+  /// ODE's global constraint force mixing, m/(N s), as at a step of time_step: the rigid-body
+  /// world makes every joint, motor, limit, contact and friction row a spring and damper
+  /// (stiffness global_erp / (time_step global_cfm), damping (1 - global_erp) / global_cfm), the
+  /// same at any substeps, and global_erp then replaces joint_erp and contact_erp. The springy
+  /// organisms' thesis ran ODE at "CFM (global) 0.01". 0: rigid rows (Bullet's).
+  double global_cfm = 0;
+  /// ODE's global error reduction, with global_cfm the rows' stiffness (ODE's default 0.2)
+  double global_erp = 0.2;
   int solver_iterations = 20;  ///< the most constraint solver iterations per Bullet step
   /// m/s: the solver stops iterating once no constraint row changes a velocity by more than this
   /// in an iteration (Bullet's least-squares residual threshold); 0: always solver_iterations.

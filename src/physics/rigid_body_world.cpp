@@ -2,6 +2,7 @@
 #include "physics/rigid_body_world.hpp"
 
 #include "physics/bullet_scene.hpp"
+#include "physics/soft_constraints.hpp"
 
 #include <BulletCollision/CollisionDispatch/btCompoundCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btCompoundCompoundCollisionAlgorithm.h>
@@ -100,7 +101,7 @@ struct RigidBodyObjects {
   btDefaultCollisionConfiguration configuration{creaturePools()};
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
+  SoftConstraintSolver solver;
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
   BulletGround ground;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
@@ -174,6 +175,18 @@ void RigidBodyWorld::build(double birth_height) {
   gravity_ = environment_.gravity.value_or(physics_.gravity);
   b.world.setGravity(btVector3(0, 0, -gravity_));
   setSolverInfo(b.world.getSolverInfo(), physics_);
+  // ODE's soft rows: the same springs and dampers at any substep (Bullet treats the contacts'
+  // normal rows' m_globalCfm as ODE does; the solver mixes the joint and friction rows)
+  const double substep = physics_.time_step / physics_.substeps;
+  const SoftRows soft =
+      softRowsAt(physics_.global_cfm, physics_.global_erp, physics_.time_step, substep);
+  if (soft.cfm > 0) {
+    btContactSolverInfo& info = b.world.getSolverInfo();
+    info.m_globalCfm = soft.cfm;
+    info.m_erp = info.m_erp2 = soft.erp;
+    b.solver.soften(soft.cfm, substep);
+    soft_erp_ = soft.erp;
+  }
   // friction along both tangent directions of every contact: with one (Bullet's default for
   // rigid bodies) a resting body jitters against its friction anchors and never comes to rest
   b.world.getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
@@ -284,6 +297,7 @@ void RigidBodyWorld::addJoints() {
         constraint->setDamping(axis, own);
       }
     }
+    soften(*constraint);
     b.world.addConstraint(constraint.get(), true);
     return constraint;
   };
@@ -332,6 +346,13 @@ void RigidBodyWorld::addJoints() {
   }
 }
 
+void RigidBodyWorld::soften(btGeneric6DofSpring2Constraint& joint) const {
+  // a locked or limited axis corrects its error at the soft rows' rate (the global ERP)
+  if (soft_erp_ > 0)
+    for (int axis = 0; axis < 6; ++axis)
+      joint.setParam(BT_CONSTRAINT_STOP_ERP, soft_erp_, axis);
+}
+
 bool RigidBodyWorld::drivesJoint(const EffectorPlan& effector) const {
   return (effector.kind == EffectorKind::joint || effector.kind == EffectorKind::position) &&
          effector.part > 0 && effector.part < static_cast<int>(plan_.parts.size()) &&
@@ -359,6 +380,7 @@ void RigidBodyWorld::addHeldObjects() {
     b.world.addRigidBody(&object);
     b.holds.push_back(
         std::make_unique<btFixedConstraint>(holder, object, in_part, btTransform::getIdentity()));
+    soften(*b.holds.back());
     b.world.addConstraint(b.holds.back().get(), true);
   }
 }

@@ -11,6 +11,7 @@
 #include <memory>
 
 class btCollisionShape;
+class btGeneric6DofSpring2Constraint;
 
 namespace cambrian {
 
@@ -62,6 +63,7 @@ class RigidBodyWorld : public World {
   btCollisionShape* partShape(int part);
   void addJoints();
   bool drivesJoint(const EffectorPlan& effector) const;
+  void soften(btGeneric6DofSpring2Constraint& joint) const;  // the soft rows' ERP on its axes
   void addHeldObjects();
   void release(std::span<const double> commands);
   void applyTorques(std::span<const double> commands);
@@ -79,6 +81,7 @@ class RigidBodyWorld : public World {
   std::vector<std::uint8_t> contact_;
   std::vector<std::uint8_t> ground_contact_;
   std::vector<std::pair<int, int>> part_contacts_;  // partContacts()
+  double soft_erp_ = 0;                             // soft rows' ERP per substep (0: rigid rows)
   int substeps_left_ = 1;               // the substeps left in this step, this one included
   std::vector<DragCoefficients> drag_;  // per part, then per object and held object: in a fluid
   std::size_t held_first_ = 0;          // the first held object's index among the free bodies

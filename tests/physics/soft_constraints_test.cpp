@@ -1,0 +1,113 @@
+// Tests of ODE's soft rows in the rigid-body world: the conversion keeps ODE's spring and damper
+// at any substep; a resting sphere sinks into the ground by its weight over the spring's
+// stiffness, the same at 1, 2 and 4 substeps, and by the slop alone with rigid rows; a soft joint
+// gives by its load over the same stiffness; the setting is refused outside the rigid-body
+// world.
+#include "physics/soft_constraints.hpp"
+
+#include "cambrian/error.hpp"
+
+#include "box_part.hpp"
+#include "core/settings.hpp"
+#include "physics/physics_settings.hpp"
+#include "physics/rigid_body_world.hpp"
+
+#include <gtest/gtest.h>
+
+namespace cambrian {
+namespace {
+
+TEST(SoftConstraints, AtItsOwnStepTheRowsAreODEs) {
+  const SoftRows same = softRowsAt(0.01, 0.2, 0.01, 0.01);
+  EXPECT_DOUBLE_EQ(same.cfm, 0.01);
+  EXPECT_DOUBLE_EQ(same.erp, 0.2);
+  const SoftRows rigid = softRowsAt(0, 0.3, 0.01, 0.005);
+  EXPECT_EQ(rigid.cfm, 0);
+  EXPECT_EQ(rigid.erp, 0.3);
+}
+
+TEST(SoftConstraints, AtAnySubstepTheSpringAndDamperStay) {
+  // ODE: stiffness erp / (h cfm) = 2000 N/m, damping (1 - erp) / cfm = 80 N s/m
+  for (double substep : {0.01, 0.005, 0.0025, 0.001}) {
+    const SoftRows rows = softRowsAt(0.01, 0.2, 0.01, substep);
+    EXPECT_NEAR(rows.erp / (substep * rows.cfm), 2000, 1e-9) << substep;
+    EXPECT_NEAR((1 - rows.erp) / rows.cfm, 80, 1e-9) << substep;
+  }
+}
+
+// a 1 kg sphere of radius 0.1 m (the springy organisms' node) resting on the ground for 3 s
+// under gravity 10 m/s^2, rows of ODE's cfm 0.01 and erp 0.2 at 0.01 s: how deep it sits
+double restingDepth(double cfm, int substeps) {
+  BodyPlan plan;
+  PartPlan node;
+  node.shape = PartShape::sphere;
+  node.size = {0.2, 0.2, 0.2};
+  node.mass = 1;
+  plan.parts.push_back(node);
+  PhysicsSettings physics;
+  physics.world = RigidBodyWorld::kName;
+  physics.time_step = 0.01;
+  physics.substeps = substeps;
+  physics.gravity = 10;
+  physics.global_cfm = cfm;
+  physics.global_erp = 0.2;
+  auto world = makeWorld(plan, Environment{}, physics, 0.0);
+  for (int s = 0; s < 300; ++s)
+    world->step({});
+  return -world->lowestPoint();
+}
+
+TEST(SoftConstraints, ARestingSphereSinksByItsWeightOverTheStiffness) {
+  // 10 N on 2000 N/m: 5 mm below the contact slop (1 mm, which no row corrects)
+  const double slop = PhysicsSettings{}.contact_slop;
+  for (int substeps : {1, 2, 4})
+    EXPECT_NEAR(restingDepth(0.01, substeps), slop + 0.005, 2e-4) << substeps << " substeps";
+  EXPECT_NEAR(restingDepth(0, 2), slop, 2e-4);
+}
+
+TEST(SoftConstraints, ASoftJointGivesByItsLoadOverTheStiffness) {
+  // a 1 kg box on top of a 1 kg box resting on the ground, on a hinge held at 0 rad: the joint
+  // carries the upper box's 10 N, and its pivots part by 10 N / 2000 N/m = 5 mm
+  BodyPlan plan;
+  plan.parts.push_back(test::box({0.2, 0.2, 0.1}, {0, 0, 0}));
+  PartPlan upper = test::hingedChild();
+  upper.size = {0.2, 0.2, 0.1};
+  upper.pose.position = {0, 0, 0.1};
+  upper.pivot_in_parent = {0, 0, 0.05};
+  upper.pivot_in_child = {0, 0, -0.05};
+  upper.joint_limit = {0, 0, 0};
+  plan.parts.push_back(upper);
+  for (PartPlan& part : plan.parts)
+    part.mass = 1;
+  for (int substeps : {1, 4}) {
+    PhysicsSettings physics;
+    physics.world = RigidBodyWorld::kName;
+    physics.time_step = 0.01;
+    physics.substeps = substeps;
+    physics.gravity = 10;
+    physics.global_cfm = 0.01;
+    physics.global_erp = 0.2;
+    auto world = makeWorld(plan, Environment{}, physics, 0.0);
+    for (int s = 0; s < 300; ++s)
+      world->step({});
+    EXPECT_NEAR(world->largestJointError(), 0.005, 2e-4) << substeps << " substeps";
+    physics.global_cfm = 0;
+    auto rigid = makeWorld(plan, Environment{}, physics, 0.0);
+    for (int s = 0; s < 300; ++s)
+      rigid->step({});
+    EXPECT_LT(rigid->largestJointError(), 1e-4) << substeps << " substeps";
+  }
+}
+
+TEST(SoftConstraints, OnlyTheRigidBodyWorldHasThem) {
+  SettingsSchema schema;
+  PhysicsSettings physics;
+  physics.declareSettings(schema);
+  schema.set("physics.global_cfm", "0.01");
+  EXPECT_THROW(schema.check(), ConfigError);
+  schema.set("physics.world", "rigid_bodies");
+  EXPECT_NO_THROW(schema.check());
+}
+
+}  // namespace
+}  // namespace cambrian
