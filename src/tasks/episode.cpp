@@ -53,6 +53,12 @@ void EpisodeSettings::declareSettings(SettingsSchema& s) {
         "a creature of fewer parts is not evaluated: status invalid_body, the worst fitness "
         "(Minemonics: 2, it discards creatures of 0 or 1 limb)")
       .require([&t] { return t.min_parts >= 1 && t.min_parts <= 1000; }, "must be in 1..1000");
+  s.add("task.check_substeps", t.check_substeps,
+        "evaluate every creature that passes again at this many physics substeps: its fitness "
+        "is the lower of the two, and one that fails there fails (a gait that rides one "
+        "discretisation keeps only what it keeps at the other); 0: once")
+      .require([&t] { return t.check_substeps >= 0 && t.check_substeps <= 100; },
+               "must be in 0..100 (0: no second evaluation)");
   s.add("task.relaxation", t.relaxation,
         "Walking with Dinosaurs' relaxation before the start-up: controller off on a frictionless "
         "ground until the centre of mass keeps its height (task.relax_*); never: unstable");

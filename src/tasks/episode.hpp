@@ -39,6 +39,11 @@ struct EpisodeSettings {
   /// Fewer parts and a creature is not evaluated (invalid_body): Minemonics discards creatures
   /// of 0 or 1 limb ("degenerate and can not move at all").
   int min_parts = 1;
+  /// Physics substeps of a second evaluation of every creature that passes the first; its
+  /// fitness is then the lower of the two, and a creature that fails the second fails. A gait
+  /// that rides one discretisation (a hop that skims a monitor, a path that hangs on one
+  /// contact's timing) scores only what it keeps at the other. 0: one evaluation.
+  int check_substeps = 0;
   /// Walking with Dinosaurs' relaxation before the start-up: the creature, controller off, on a
   /// frictionless ground until its centre of mass has stayed within relax_tolerance of one height
   /// for relax_steps steps in a row; not relaxed within relax_max_time: unstable. Then the ground

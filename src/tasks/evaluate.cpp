@@ -4,6 +4,7 @@
 #include "cambrian/error.hpp"
 #include "cambrian/rng.hpp"
 
+#include "physics/physics_settings.hpp"
 #include "physics/simulation.hpp"
 #include "tasks/episode.hpp"
 #include "tasks/task.hpp"
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <utility>
 
 namespace cambrian {
 
@@ -27,13 +29,14 @@ Outcome failure(EvalStatus status, const std::string& message) {
   return outcome;
 }
 
-// a developed creature through its task
+// a developed creature through its task, in `physics`
 Outcome evaluateBody(const Creature& creature, const CreatureSettings& settings,
-                     Clock::time_point start, FrameObserver* observer) {
+                     const PhysicsSettings& physics, Clock::time_point start,
+                     FrameObserver* observer) {
   const Task& task = settings.task();
   Environment environment = settings.environment();
   task.prepare(environment);
-  Episode episode(creature, environment, settings.physics(), settings.episode(), start, observer);
+  Episode episode(creature, environment, physics, settings.episode(), start, observer);
   if (episode.born()) {
     task.run(episode);
     Outcome& outcome = episode.outcome();
@@ -41,6 +44,23 @@ Outcome evaluateBody(const Creature& creature, const CreatureSettings& settings,
       outcome.fitness = kWorstFitness;
   }
   return episode.finish();
+}
+
+// task.check_substeps: the creature (developed afresh) again at `substeps`; the second
+// outcome, measures and all, replaces the first where it failed or scored lower
+void checkAtSubsteps(const Creature& creature, const CreatureSettings& settings, int substeps,
+                     Clock::time_point start, Outcome& outcome) {
+  PhysicsSettings physics = settings.physics();
+  physics.substeps = substeps;
+  Outcome check = evaluateBody(creature, settings, physics, start, nullptr);
+  check.steps += outcome.steps;
+  if (check.status != EvalStatus::ok || check.fitness < outcome.fitness) {
+    check.message = "at task.check_substeps = " + std::to_string(substeps) +
+                    (check.message.empty() ? "" : ": " + check.message);
+    outcome = std::move(check);
+  } else {
+    outcome.steps = check.steps;
+  }
 }
 
 }  // namespace
@@ -107,7 +127,10 @@ Outcome evaluate(const Genotype& genome, const CreatureSettings& settings, std::
                                 ", fewer than task.min_parts = " + std::to_string(least));
           outcome.parts = static_cast<int>(parts);
         } else {
-          outcome = evaluateBody(creature, settings, start, observer);
+          outcome = evaluateBody(creature, settings, settings.physics(), start, observer);
+          const int check = settings.episode().check_substeps;
+          if (check > 0 && outcome.status == EvalStatus::ok)
+            checkAtSubsteps(encoding.develop(genome), settings, check, start, outcome);
         }
       }
     }

@@ -148,6 +148,49 @@ TEST(Evaluate, DeterministicInOneProcess) {
   }
 }
 
+// task.check_substeps: a second evaluation at other substeps, the worse of the two kept whole
+TEST(Evaluate, ASecondEvaluationAtOtherSubstepsKeepsTheWorse) {
+  Genome walker = creature("walker4.genome");
+  const Outcome two = evaluateGraph(walker, shortWalk());
+  const Outcome four = evaluateGraph(walker, shortWalk({{"physics.substeps", "4"}}));
+  ASSERT_EQ(two.status, EvalStatus::ok) << two.message;
+  ASSERT_EQ(four.status, EvalStatus::ok) << four.message;
+  ASSERT_NE(two.fitness, four.fitness);
+  const Outcome& worse = two.fitness < four.fitness ? two : four;
+  for (const auto& [substeps, check] : {std::pair{"2", "4"}, std::pair{"4", "2"}}) {
+    const Outcome checked = evaluateGraph(
+        walker, shortWalk({{"physics.substeps", substeps}, {"task.check_substeps", check}}));
+    EXPECT_EQ(checked.status, EvalStatus::ok) << checked.message;
+    EXPECT_TRUE(bitIdentical(checked.fitness, worse.fitness)) << substeps << " then " << check;
+    EXPECT_EQ(checked.measures, worse.measures);
+    EXPECT_EQ(checked.steps, two.steps + four.steps);
+  }
+}
+
+// a creature that passes at one discretisation and fails at the other fails, with the check's
+// status and a message naming the key
+TEST(Evaluate, ACreatureThatFailsTheSecondEvaluationFails) {
+  // the first random genome (of 1..200) that walks 3 s at 2 substeps under a speed limit of
+  // 1 m/s and breaks it at 1 substep
+  const CreatureSettings fine = shortWalk({{"physics.max_speed", "1"}});
+  const CreatureSettings coarse =
+      shortWalk({{"physics.max_speed", "1"}, {"physics.substeps", "1"}});
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    const Genome random = graph::randomGenome(graph::GenomeLimits{}, seed);
+    const Outcome at_two = evaluateGraph(random, fine);
+    const Outcome at_one = evaluateGraph(random, coarse);
+    if (at_two.status != EvalStatus::ok || at_one.status == EvalStatus::ok)
+      continue;
+    const Outcome checked = evaluateGraph(
+        random, shortWalk({{"physics.max_speed", "1"}, {"task.check_substeps", "1"}}));
+    EXPECT_EQ(checked.status, at_one.status) << "seed " << seed;
+    EXPECT_EQ(checked.fitness, kWorstFitness);
+    EXPECT_EQ(checked.message.rfind("at task.check_substeps = 1: ", 0), 0u) << checked.message;
+    return;
+  }
+  FAIL() << "no random genome of 1..200 passes at 2 substeps and fails at 1";
+}
+
 // a genome that breaks a rule gets invalid_body and the worst fitness
 TEST(Evaluate, InvalidGenome) {
   Genome genome = creature("pole.genome");
