@@ -1,9 +1,16 @@
-# The version and git hash compiled into the binary and written into every history file.
-execute_process(COMMAND git rev-parse --short=12 HEAD WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-                OUTPUT_VARIABLE CAMBRIAN_GIT_HASH OUTPUT_STRIP_TRAILING_WHITESPACE
-                ERROR_QUIET RESULT_VARIABLE git_result)
-if(NOT git_result EQUAL 0 OR CAMBRIAN_GIT_HASH STREQUAL "")
-  set(CAMBRIAN_GIT_HASH "unknown")
-endif()
-configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in
-               ${PROJECT_BINARY_DIR}/generated/cambrian/version.hpp @ONLY)
+# The version and git hash compiled into the binary and written into every history file: the
+# hash is taken at every build (cmake/CambrianGitHash.cmake), not once at configure time, so a
+# rebuilt binary names its own commit.
+set(CAMBRIAN_VERSION_HEADER ${PROJECT_BINARY_DIR}/generated/cambrian/version.hpp)
+set(cambrian_git_hash_args
+    -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -DINPUT=${PROJECT_SOURCE_DIR}/cmake/version.hpp.in
+    -DOUTPUT=${CAMBRIAN_VERSION_HEADER} -DPROJECT_VERSION=${PROJECT_VERSION})
+execute_process(COMMAND ${CMAKE_COMMAND} ${cambrian_git_hash_args} -P
+                        ${PROJECT_SOURCE_DIR}/cmake/CambrianGitHash.cmake)
+add_custom_target(
+  cambrian_version
+  COMMAND ${CMAKE_COMMAND} ${cambrian_git_hash_args} -P
+          ${PROJECT_SOURCE_DIR}/cmake/CambrianGitHash.cmake
+  BYPRODUCTS ${CAMBRIAN_VERSION_HEADER}
+  COMMENT "The git hash into cambrian/version.hpp"
+  VERBATIM)

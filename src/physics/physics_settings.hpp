@@ -91,6 +91,12 @@ struct PhysicsSettings {
   double global_cfm = 0;
   /// ODE's global error reduction, with global_cfm the rows' stiffness (ODE's default 0.2)
   double global_erp = 0.2;
+  /// The rigid-body world's constraint solver: "sequential_impulse" (Bullet's iterative
+  /// projected Gauss-Seidel, solver_iterations sweeps) or "dantzig" (Bullet's MLCP solver with
+  /// its Dantzig pivoting: every row of a step solved together and exactly, as ODE's dWorldStep
+  /// does; a step it cannot solve falls back to sequential impulses). Dantzig needs global_cfm's
+  /// soft rows: with rigid ones a contact's corners or a closed loop make the matrix singular.
+  std::string constraint_solver = "sequential_impulse";
   int solver_iterations = 20;  ///< the most constraint solver iterations per Bullet step
   /// m/s: the solver stops iterating once no constraint row changes a velocity by more than this
   /// in an iteration (Bullet's least-squares residual threshold); 0: always solver_iterations.

@@ -98,11 +98,20 @@ int constraintAxis(JointType joint, int dof) {
 
 // the Bullet objects of one world, destroyed in reverse order of creation
 struct RigidBodyObjects {
+  explicit RigidBodyObjects(const std::string& constraint_solver)
+      : direct(constraint_solver == "dantzig" ? std::make_unique<SoftDirectSolver>() : nullptr),
+        iterative(direct ? nullptr : std::make_unique<SoftConstraintSolver>()),
+        world(&dispatcher, &broadphase,
+              direct ? static_cast<btConstraintSolver*>(direct.get()) : iterative.get(),
+              &configuration) {}
+
   btDefaultCollisionConfiguration configuration{creaturePools()};
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
-  SoftConstraintSolver solver;
-  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  // physics.constraint_solver: one of the two
+  std::unique_ptr<SoftDirectSolver> direct;
+  std::unique_ptr<SoftConstraintSolver> iterative;
+  btDiscreteDynamicsWorld world;
   BulletGround ground;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<PartBody>> parts;  // BodyPlan order
@@ -155,7 +164,7 @@ void RigidBodyWorld::refuse(EvalStatus status, std::string message) {
 }
 
 void RigidBodyWorld::build(double birth_height) {
-  bullet_ = std::make_unique<RigidBodyObjects>();
+  bullet_ = std::make_unique<RigidBodyObjects>(physics_.constraint_solver);
   RigidBodyObjects& b = *bullet_;
   const int part_count = static_cast<int>(plan_.parts.size());
   if (part_count == 0) {
@@ -184,7 +193,10 @@ void RigidBodyWorld::build(double birth_height) {
     btContactSolverInfo& info = b.world.getSolverInfo();
     info.m_globalCfm = soft.cfm;
     info.m_erp = info.m_erp2 = soft.erp;
-    b.solver.soften(soft.cfm, substep);
+    if (b.direct)
+      b.direct->soften(soft.cfm, substep);
+    else
+      b.iterative->soften(soft.cfm, substep);
     soft_erp_ = soft.erp;
   }
   // friction along both tangent directions of every contact: with one (Bullet's default for
@@ -569,6 +581,10 @@ const std::vector<std::uint8_t>& RigidBodyWorld::groundContacts() {
 const std::vector<std::pair<int, int>>& RigidBodyWorld::partContacts() {
   touchingPartPairs(*bullet_->world.getDispatcher(), part_contacts_);
   return part_contacts_;
+}
+
+int RigidBodyWorld::directSolveFallbacks() const {
+  return bullet_->direct ? bullet_->direct->fallbacks() : 0;
 }
 
 double RigidBodyWorld::largestJointError() const {

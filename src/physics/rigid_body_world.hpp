@@ -57,6 +57,8 @@ class RigidBodyWorld : public World {
   bool released(int held) const override { return released_.at(static_cast<std::size_t>(held)); }
   double mechanicalEnergy() const override;
   double effectorWorkBound() const override { return work_bound_; }
+  /// Steps the direct solve (physics.constraint_solver = dantzig) left to sequential impulses.
+  int directSolveFallbacks() const;
 
  private:
   void build(double birth_height);

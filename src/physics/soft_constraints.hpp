@@ -3,6 +3,8 @@
 #pragma once
 
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+#include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
+#include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
 
 namespace cambrian {
 
@@ -35,6 +37,31 @@ class SoftConstraintSolver : public btSequentialImpulseConstraintSolver {
                                         btIDebugDraw* draw) override;
 
  private:
+  double mixing_ = 0;  // velocity per impulse, cfm / substep
+};
+
+/// Bullet's MLCP solver with its Dantzig pivoting: all rows of a step solved together and
+/// exactly, as ODE's dWorldStep does, each row mixed by the world's m_globalCfm (the same
+/// springs and dampers as SoftConstraintSolver's). A step the pivoting cannot solve (Bullet
+/// gives up on a degenerate pivot, or an impulse past 1,000 N s) is solved by sequential
+/// impulses over rows mixed as SoftConstraintSolver mixes them; fallbacks() counts those steps.
+class SoftDirectSolver : public btMLCPSolver {
+ public:
+  SoftDirectSolver() : btMLCPSolver(&dantzig_) {}
+  /// Rows of `cfm` at a Bullet step of `substep` s from now on (0: Bullet's own).
+  void soften(double cfm, double substep);
+  /// Steps solved by sequential impulses since the world was made.
+  int fallbacks() const { return getNumFallbacks(); }
+
+ protected:
+  btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int body_count,
+                                        btPersistentManifold** manifolds, int manifold_count,
+                                        btTypedConstraint** constraints, int constraint_count,
+                                        const btContactSolverInfo& info,
+                                        btIDebugDraw* draw) override;
+
+ private:
+  btDantzigSolver dantzig_;
   double mixing_ = 0;  // velocity per impulse, cfm / substep
 };
 

@@ -2,7 +2,8 @@
 // at any substep; a resting sphere sinks into the ground by its weight over the spring's
 // stiffness, the same at 1, 2 and 4 substeps, and by the slop alone with rigid rows; a soft joint
 // gives by its load over the same stiffness; the setting is refused outside the rigid-body
-// world.
+// world. The direct solve (physics.constraint_solver = dantzig) gives the same springs at any
+// substep and any iteration count, and is refused without soft rows.
 #include "physics/soft_constraints.hpp"
 
 #include "cambrian/error.hpp"
@@ -13,6 +14,9 @@
 #include "physics/rigid_body_world.hpp"
 
 #include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
 
 namespace cambrian {
 namespace {
@@ -37,7 +41,7 @@ TEST(SoftConstraints, AtAnySubstepTheSpringAndDamperStay) {
 
 // a 1 kg sphere of radius 0.1 m (the springy organisms' node) resting on the ground for 3 s
 // under gravity 10 m/s^2, rows of ODE's cfm 0.01 and erp 0.2 at 0.01 s: how deep it sits
-double restingDepth(double cfm, int substeps) {
+double restingDepth(double cfm, int substeps, const std::string& solver = "sequential_impulse") {
   BodyPlan plan;
   PartPlan node;
   node.shape = PartShape::sphere;
@@ -51,6 +55,7 @@ double restingDepth(double cfm, int substeps) {
   physics.gravity = 10;
   physics.global_cfm = cfm;
   physics.global_erp = 0.2;
+  physics.constraint_solver = solver;
   auto world = makeWorld(plan, Environment{}, physics, 0.0);
   for (int s = 0; s < 300; ++s)
     world->step({});
@@ -65,9 +70,9 @@ TEST(SoftConstraints, ARestingSphereSinksByItsWeightOverTheStiffness) {
   EXPECT_NEAR(restingDepth(0, 2), slop, 2e-4);
 }
 
-TEST(SoftConstraints, ASoftJointGivesByItsLoadOverTheStiffness) {
-  // a 1 kg box on top of a 1 kg box resting on the ground, on a hinge held at 0 rad: the joint
-  // carries the upper box's 10 N, and its pivots part by 10 N / 2000 N/m = 5 mm
+// a 1 kg box on top of a 1 kg box resting on the ground, on a hinge held at 0 rad: the joint
+// carries the upper box's 10 N
+BodyPlan stackedBoxes() {
   BodyPlan plan;
   plan.parts.push_back(test::box({0.2, 0.2, 0.1}, {0, 0, 0}));
   PartPlan upper = test::hingedChild();
@@ -79,23 +84,39 @@ TEST(SoftConstraints, ASoftJointGivesByItsLoadOverTheStiffness) {
   plan.parts.push_back(upper);
   for (PartPlan& part : plan.parts)
     part.mass = 1;
+  return plan;
+}
+
+// the stacked boxes after 3 s under ODE's rows at 0.01 s (cfm 0: rigid)
+std::unique_ptr<World> stackedAfter3s(double cfm, int substeps, const std::string& solver,
+                                      int iterations = PhysicsSettings{}.solver_iterations) {
+  PhysicsSettings physics;
+  physics.world = RigidBodyWorld::kName;
+  physics.time_step = 0.01;
+  physics.substeps = substeps;
+  physics.gravity = 10;
+  physics.global_cfm = cfm;
+  physics.global_erp = 0.2;
+  physics.constraint_solver = solver;
+  physics.solver_iterations = iterations;
+  auto world = makeWorld(stackedBoxes(), Environment{}, physics, 0.0);
+  for (int s = 0; s < 300; ++s)
+    world->step({});
+  return world;
+}
+
+double stackedJointError(double cfm, int substeps, const std::string& solver,
+                         int iterations = PhysicsSettings{}.solver_iterations) {
+  return stackedAfter3s(cfm, substeps, solver, iterations)->largestJointError();
+}
+
+TEST(SoftConstraints, ASoftJointGivesByItsLoadOverTheStiffness) {
+  // 10 N on 2000 N/m: the pivots part by 5 mm
   for (int substeps : {1, 4}) {
-    PhysicsSettings physics;
-    physics.world = RigidBodyWorld::kName;
-    physics.time_step = 0.01;
-    physics.substeps = substeps;
-    physics.gravity = 10;
-    physics.global_cfm = 0.01;
-    physics.global_erp = 0.2;
-    auto world = makeWorld(plan, Environment{}, physics, 0.0);
-    for (int s = 0; s < 300; ++s)
-      world->step({});
-    EXPECT_NEAR(world->largestJointError(), 0.005, 2e-4) << substeps << " substeps";
-    physics.global_cfm = 0;
-    auto rigid = makeWorld(plan, Environment{}, physics, 0.0);
-    for (int s = 0; s < 300; ++s)
-      rigid->step({});
-    EXPECT_LT(rigid->largestJointError(), 1e-4) << substeps << " substeps";
+    EXPECT_NEAR(stackedJointError(0.01, substeps, "sequential_impulse"), 0.005, 2e-4)
+        << substeps << " substeps";
+    EXPECT_LT(stackedJointError(0, substeps, "sequential_impulse"), 1e-4)
+        << substeps << " substeps";
   }
 }
 
@@ -107,6 +128,42 @@ TEST(SoftConstraints, OnlyTheRigidBodyWorldHasThem) {
   EXPECT_THROW(schema.check(), ConfigError);
   schema.set("physics.world", "rigid_bodies");
   EXPECT_NO_THROW(schema.check());
+}
+
+TEST(DirectSolve, ARestingSphereSinksAsUnderIterations) {
+  const double slop = PhysicsSettings{}.contact_slop;
+  for (int substeps : {1, 2, 4})
+    EXPECT_NEAR(restingDepth(0.01, substeps, "dantzig"), slop + 0.005, 2e-4)
+        << substeps << " substeps";
+}
+
+TEST(DirectSolve, ASoftJointGivesByItsLoadAtAnyIterationCount) {
+  // one sweep allowed gives the spring's 5 mm: the direct solve does not iterate (a step it
+  // leaves to sequential impulses, which they solve over the same soft rows, is counted)
+  for (int substeps : {1, 2, 4, 8})
+    EXPECT_NEAR(stackedJointError(0.01, substeps, "dantzig", 1), 0.005, 2e-5)
+        << substeps << " substeps";
+  // at 1 substep no step falls back, and one sweep is fifty, bit for bit; not so iterating
+  auto one = stackedAfter3s(0.01, 1, "dantzig", 1), fifty = stackedAfter3s(0.01, 1, "dantzig", 50);
+  EXPECT_EQ(dynamic_cast<const RigidBodyWorld&>(*one).directSolveFallbacks(), 0);
+  EXPECT_EQ(one->largestJointError(), fifty->largestJointError());
+  EXPECT_EQ(one->partPosition(1).x, fifty->partPosition(1).x);
+  EXPECT_NE(stackedJointError(0.01, 1, "sequential_impulse", 1),
+            stackedJointError(0.01, 1, "sequential_impulse", 50));
+}
+
+TEST(DirectSolve, OnlyTheRigidBodyWorldWithSoftRowsHasIt) {
+  SettingsSchema schema;
+  PhysicsSettings physics;
+  physics.declareSettings(schema);
+  schema.set("physics.constraint_solver", "dantzig");
+  EXPECT_THROW(schema.check(), ConfigError);  // the Featherstone world
+  schema.set("physics.world", "rigid_bodies");
+  EXPECT_THROW(schema.check(), ConfigError);  // rigid rows
+  schema.set("physics.global_cfm", "0.01");
+  EXPECT_NO_THROW(schema.check());
+  schema.set("physics.constraint_solver", "lemke");
+  EXPECT_THROW(schema.check(), ConfigError);
 }
 
 }  // namespace
