@@ -20,49 +20,57 @@ struct SoftRows {
 /// (1 - erp) / cfm; at substep = time_step the same two numbers). cfm 0: rigid rows.
 SoftRows softRowsAt(double cfm, double erp, double time_step, double substep);
 
-/// Bullet's sequential-impulse solver whose joint and friction rows get a constraint force
-/// mixing of `cfm`, as ODE's do (Bullet mixes a joint row's impulse in without the step and the
-/// row's effective mass, so the same number means something else there). Contacts' normal rows
-/// take the world's m_globalCfm, which Bullet already treats as ODE does.
-class SoftConstraintSolver : public btSequentialImpulseConstraintSolver {
+/// Gives each joint and friction row of `rows` a constraint force mixing of `mixing` (velocity
+/// per impulse) as ODE does; rows of Bullet's solver after its setup.
+void mixSoftRows(btConstraintArray& rows, double mixing);
+
+/// A Bullet solver (`Solver`) whose joint and friction rows get a constraint force mixing of
+/// `cfm`, as ODE's do (Bullet mixes a joint row's impulse in without the step and the row's
+/// effective mass, so the same number means something else there). Contacts' normal rows take
+/// the world's m_globalCfm, which Bullet already treats as ODE does.
+template <class Solver>
+class SoftRowsSolver : public Solver {
  public:
+  using Solver::Solver;
   /// Rows of `cfm` at a Bullet step of `substep` s from now on (0: Bullet's own).
-  void soften(double cfm, double substep);
+  void soften(double cfm, double substep) { mixing_ = cfm > 0 ? cfm / substep : 0; }
 
  protected:
   btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int body_count,
                                         btPersistentManifold** manifolds, int manifold_count,
                                         btTypedConstraint** constraints, int constraint_count,
                                         const btContactSolverInfo& info,
-                                        btIDebugDraw* draw) override;
+                                        btIDebugDraw* draw) override {
+    const btScalar residual = Solver::solveGroupCacheFriendlySetup(
+        bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, draw);
+    if (mixing_ > 0) {
+      mixSoftRows(this->m_tmpSolverNonContactConstraintPool, mixing_);
+      mixSoftRows(this->m_tmpSolverContactFrictionConstraintPool, mixing_);
+    }
+    return residual;
+  }
 
  private:
   double mixing_ = 0;  // velocity per impulse, cfm / substep
 };
 
+/// Bullet's sequential-impulse solver with ODE's soft rows.
+using SoftConstraintSolver = SoftRowsSolver<btSequentialImpulseConstraintSolver>;
+
 /// Bullet's MLCP solver with its Dantzig pivoting: all rows of a step solved together and
 /// exactly, as ODE's dWorldStep does, each row mixed by the world's m_globalCfm (the same
-/// springs and dampers as SoftConstraintSolver's). A step the pivoting cannot solve (Bullet
-/// gives up on a degenerate pivot, or an impulse past 1,000 N s) is solved by sequential
-/// impulses over rows mixed as SoftConstraintSolver mixes them; fallbacks() counts those steps.
-class SoftDirectSolver : public btMLCPSolver {
+/// springs and dampers as SoftConstraintSolver's: the mixing leaves a row's velocity error, which
+/// the matrix takes, as it is). A step the pivoting cannot solve (Bullet gives up on a degenerate
+/// pivot, or an impulse past 1,000 N s) is solved by sequential impulses over the mixed rows;
+/// fallbacks() counts those steps.
+class SoftDirectSolver : public SoftRowsSolver<btMLCPSolver> {
  public:
-  SoftDirectSolver() : btMLCPSolver(&dantzig_) {}
-  /// Rows of `cfm` at a Bullet step of `substep` s from now on (0: Bullet's own).
-  void soften(double cfm, double substep);
+  SoftDirectSolver() : SoftRowsSolver<btMLCPSolver>(&dantzig_) {}
   /// Steps solved by sequential impulses since the world was made.
   int fallbacks() const { return getNumFallbacks(); }
 
- protected:
-  btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int body_count,
-                                        btPersistentManifold** manifolds, int manifold_count,
-                                        btTypedConstraint** constraints, int constraint_count,
-                                        const btContactSolverInfo& info,
-                                        btIDebugDraw* draw) override;
-
  private:
   btDantzigSolver dantzig_;
-  double mixing_ = 0;  // velocity per impulse, cfm / substep
 };
 
 }  // namespace cambrian

@@ -39,15 +39,11 @@ TEST(SoftConstraints, AtAnySubstepTheSpringAndDamperStay) {
   }
 }
 
-// a 1 kg sphere of radius 0.1 m (the springy organisms' node) resting on the ground for 3 s
-// under gravity 10 m/s^2, rows of ODE's cfm 0.01 and erp 0.2 at 0.01 s: how deep it sits
-double restingDepth(double cfm, int substeps, const std::string& solver = "sequential_impulse") {
-  BodyPlan plan;
-  PartPlan node;
-  node.shape = PartShape::sphere;
-  node.size = {0.2, 0.2, 0.2};
-  node.mass = 1;
-  plan.parts.push_back(node);
+// `plan` after 3 s in the rigid-body world under gravity 10 m/s^2 and ODE's rows of `cfm` (0:
+// rigid) and erp 0.2 at 0.01 s
+std::unique_ptr<World> after3s(const BodyPlan& plan, double cfm, int substeps,
+                               const std::string& solver = "sequential_impulse",
+                               int iterations = PhysicsSettings{}.solver_iterations) {
   PhysicsSettings physics;
   physics.world = RigidBodyWorld::kName;
   physics.time_step = 0.01;
@@ -56,9 +52,23 @@ double restingDepth(double cfm, int substeps, const std::string& solver = "seque
   physics.global_cfm = cfm;
   physics.global_erp = 0.2;
   physics.constraint_solver = solver;
+  physics.solver_iterations = iterations;
   auto world = makeWorld(plan, Environment{}, physics, 0.0);
   for (int s = 0; s < 300; ++s)
     world->step({});
+  return world;
+}
+
+// a 1 kg sphere of radius 0.1 m (the springy organisms' node) resting on the ground: how deep
+// it sits
+double restingDepth(double cfm, int substeps, const std::string& solver = "sequential_impulse") {
+  BodyPlan plan;
+  PartPlan node;
+  node.shape = PartShape::sphere;
+  node.size = {0.2, 0.2, 0.2};
+  node.mass = 1;
+  plan.parts.push_back(node);
+  auto world = after3s(plan, cfm, substeps, solver);
   return -world->lowestPoint();
 }
 
@@ -87,27 +97,9 @@ BodyPlan stackedBoxes() {
   return plan;
 }
 
-// the stacked boxes after 3 s under ODE's rows at 0.01 s (cfm 0: rigid)
-std::unique_ptr<World> stackedAfter3s(double cfm, int substeps, const std::string& solver,
-                                      int iterations = PhysicsSettings{}.solver_iterations) {
-  PhysicsSettings physics;
-  physics.world = RigidBodyWorld::kName;
-  physics.time_step = 0.01;
-  physics.substeps = substeps;
-  physics.gravity = 10;
-  physics.global_cfm = cfm;
-  physics.global_erp = 0.2;
-  physics.constraint_solver = solver;
-  physics.solver_iterations = iterations;
-  auto world = makeWorld(stackedBoxes(), Environment{}, physics, 0.0);
-  for (int s = 0; s < 300; ++s)
-    world->step({});
-  return world;
-}
-
 double stackedJointError(double cfm, int substeps, const std::string& solver,
                          int iterations = PhysicsSettings{}.solver_iterations) {
-  return stackedAfter3s(cfm, substeps, solver, iterations)->largestJointError();
+  return after3s(stackedBoxes(), cfm, substeps, solver, iterations)->largestJointError();
 }
 
 TEST(SoftConstraints, ASoftJointGivesByItsLoadOverTheStiffness) {
@@ -144,7 +136,8 @@ TEST(DirectSolve, ASoftJointGivesByItsLoadAtAnyIterationCount) {
     EXPECT_NEAR(stackedJointError(0.01, substeps, "dantzig", 1), 0.005, 2e-5)
         << substeps << " substeps";
   // at 1 substep no step falls back, and one sweep is fifty, bit for bit; not so iterating
-  auto one = stackedAfter3s(0.01, 1, "dantzig", 1), fifty = stackedAfter3s(0.01, 1, "dantzig", 50);
+  auto one = after3s(stackedBoxes(), 0.01, 1, "dantzig", 1);
+  auto fifty = after3s(stackedBoxes(), 0.01, 1, "dantzig", 50);
   EXPECT_EQ(dynamic_cast<const RigidBodyWorld&>(*one).directSolveFallbacks(), 0);
   EXPECT_EQ(one->largestJointError(), fifty->largestJointError());
   EXPECT_EQ(one->partPosition(1).x, fifty->partPosition(1).x);
