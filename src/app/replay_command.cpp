@@ -285,6 +285,9 @@ bool compareOutcomes(const HistoryReader& history, const Individual& row, const 
   bool match = replayed.status == stored.status;
   std::printf("%-14s %-24s %s%s\n", "status", statusName(stored.status),
               statusName(replayed.status), match || !compare ? "" : "  DIFFERENT");
+  // why the replay failed (a stored creature passed: it has no such line)
+  if (replayed.status != EvalStatus::ok && !replayed.message.empty())
+    std::printf("%-14s %-24s %s\n", "why", "", replayed.message.c_str());
   if (rankedRun(history)) {
     // ranked within its generation (evolution.ranking): shown, not compared
     std::printf(

@@ -303,6 +303,19 @@ TEST_F(ReplayCommand, ChangedSettingsAreShownNotCompared) {
             "replay         under changed settings (not compared)");
 }
 
+// a creature that fails under the changed settings: the monitor's message says why
+TEST_F(ReplayCommand, AFailureUnderChangedSettingsSaysWhy) {
+  auto result = runCambrian("replay --history " + history_ + " --best --physics.max_speed 1e-6");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(words(lineStartingWith(result.output, "status")).back(), "exploded") << result.output;
+  EXPECT_NE(lineStartingWith(result.output, "why").find("(physics.max_speed 1e-06)"),
+            std::string::npos)
+      << result.output;
+  // a replay that passes has no such line
+  auto same = runCambrian("replay --history " + history_ + " --best");
+  EXPECT_EQ(lineStartingWith(same.output, "why"), "") << same.output;
+}
+
 // a setting given equal to the stored value changes nothing: the replay is still compared bit
 // for bit (command line and config file)
 TEST_F(ReplayCommand, SettingEqualToStoredIsStillCompared) {
