@@ -100,18 +100,23 @@ void PhysicsSettings::declareSettings(SettingsSchema& s) {
         "ODE's global error reduction at physics.time_step: with physics.global_cfm the rows' "
         "stiffness")
       .require([&p] { return p.global_erp > 0 && p.global_erp < 1; }, "must be in (0, 1)");
-  s.add("physics.constraint_solver", p.constraint_solver,
-        "the rigid-body world's constraint solver: sequential_impulse (Bullet's iterations, "
-        "physics.solver_iterations of them) | dantzig (all rows of a step solved together and "
-        "exactly by Bullet's MLCP solver, as ODE's dWorldStep does, with physics.global_cfm's "
-        "soft rows; a step it cannot solve falls back to sequential impulses)")
-      .oneOf({"sequential_impulse", "dantzig"})
+  s.addChoice("physics.constraint_solver", p.constraint_solver,
+              {{"sequential_impulse", ConstraintSolver::sequential_impulse},
+               {"dantzig", ConstraintSolver::dantzig}},
+              "the rigid-body world's constraint solver: sequential_impulse (Bullet's iterations, "
+              "physics.solver_iterations of them) | dantzig (all rows of a step solved together "
+              "and exactly by Bullet's MLCP solver, as ODE's dWorldStep does, with "
+              "physics.global_cfm's soft rows; a step it cannot solve falls back to sequential "
+              "impulses)")
       .require(
-          [&p] { return p.constraint_solver == "sequential_impulse" || p.world == "rigid_bodies"; },
+          [&p] {
+            return p.constraint_solver != ConstraintSolver::dantzig || p.world == "rigid_bodies";
+          },
           "dantzig is built in physics.world = rigid_bodies only")
-      .require([&p] { return p.constraint_solver == "sequential_impulse" || p.global_cfm > 0; },
-               "dantzig needs physics.global_cfm > 0 (rigid rows make the matrix of a contact's "
-               "corners or a closed loop singular, and nearly every step falls back)");
+      .require(
+          [&p] { return p.constraint_solver != ConstraintSolver::dantzig || p.global_cfm > 0; },
+          "dantzig needs physics.global_cfm > 0 (rigid rows make the matrix of a contact's "
+          "corners or a closed loop singular, and nearly every step falls back)");
   s.add("physics.solver_tolerance", p.solver_tolerance,
         "stop iterating once no constraint row changes a velocity by more than this, m/s (0: "
         "always physics.solver_iterations)")

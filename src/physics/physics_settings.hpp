@@ -9,6 +9,12 @@ namespace cambrian {
 class SettingsSchema;
 
 /// How effector commands move the joints.
+/// The rigid-body world's constraint solver (physics.constraint_solver).
+enum class ConstraintSolver : std::uint8_t {
+  sequential_impulse,  ///< Bullet's iterative projected Gauss-Seidel
+  dantzig,             ///< Bullet's MLCP solver with Dantzig pivoting (ODE's dWorldStep)
+};
+
 enum class Actuation : std::uint8_t {
   /// Chaumont et al. 5.3: a velocity motor run at saturation. The command's sign picks the
   /// direction of a fixed, high target speed and its magnitude the largest torque the motor may
@@ -96,7 +102,7 @@ struct PhysicsSettings {
   /// its Dantzig pivoting: every row of a step solved together and exactly, as ODE's dWorldStep
   /// does; a step it cannot solve falls back to sequential impulses). Dantzig needs global_cfm's
   /// soft rows: with rigid ones a contact's corners or a closed loop make the matrix singular.
-  std::string constraint_solver = "sequential_impulse";
+  ConstraintSolver constraint_solver = ConstraintSolver::sequential_impulse;
   int solver_iterations = 20;  ///< the most constraint solver iterations per Bullet step
   /// m/s: the solver stops iterating once no constraint row changes a velocity by more than this
   /// in an iteration (Bullet's least-squares residual threshold); 0: always solver_iterations.

@@ -98,8 +98,9 @@ int constraintAxis(JointType joint, int dof) {
 
 // the Bullet objects of one world, destroyed in reverse order of creation
 struct RigidBodyObjects {
-  explicit RigidBodyObjects(const std::string& constraint_solver)
-      : direct(constraint_solver == "dantzig" ? std::make_unique<SoftDirectSolver>() : nullptr),
+  explicit RigidBodyObjects(ConstraintSolver constraint_solver)
+      : direct(constraint_solver == ConstraintSolver::dantzig ? std::make_unique<SoftDirectSolver>()
+                                                              : nullptr),
         iterative(direct ? nullptr : std::make_unique<SoftConstraintSolver>()),
         world(&dispatcher, &broadphase,
               direct ? static_cast<btConstraintSolver*>(direct.get()) : iterative.get(),
