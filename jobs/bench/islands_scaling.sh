@@ -9,9 +9,13 @@
 # breeding ranks' largest CPU share, and analysis/scaling_model.py's archipelago time for the
 # same point, calibrated on the first point's island 0 (with one worker it has no waits), with
 # its error. Figures and their reading: docs/scaling.md.
-# usage: jobs/bench/islands_scaling.sh [path/to/cambrian] [POINTS] [quick]
+# usage: [MODE=steady_state] jobs/bench/islands_scaling.sh [path/to/cambrian] [POINTS] [quick]
 #   POINTS: space-separated RANKS:ISLANDS (default "2:1 16:1 16:2 32:2 32:4 64:4 128:8")
 #   quick: two generations of 40 creatures per point (a smoke test; the figures mean little)
+#   MODE=steady_state: islands of steady states (evolution.mode = steady_state; a generation is
+#     P results taken in, none copied); the model's island time is then steady_time's, calibrated
+#     on the first point run once more as a generational run (the calibration reads a
+#     generational history)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cambrian=$(realpath "${1:-build/release/src/app/cambrian}")
@@ -22,20 +26,26 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cost_us=10000 population=300 generations=6 interval=2
 if [ "$quick" = quick ]; then cost_us=2000 population=40 generations=3 interval=1; fi
+mode=${MODE:-generational}
 
-for point in $points; do
-  ranks=${point%%:*} islands=${point##*:}
-  out="$work/r${ranks}_i${islands}"
-  mpirun -np "$ranks" --oversubscribe "$cambrian" evolve --config jobs/experiments/synthetic.ini \
+# one archipelago: RANKS ISLANDS MODE OUT
+archipelago() {
+  mpirun -np "$1" --oversubscribe "$cambrian" evolve --config jobs/experiments/synthetic.ini \
     --task.synthetic_work sleep --task.synthetic_distribution fixed \
     --task.synthetic_cost_us "$cost_us" --evolution.population "$population" \
-    --evolution.generations "$generations" --islands.count "$islands" \
-    --islands.interval "$interval" --quiet --out "$out" > "$out.txt" ||
-    { cat "$out.txt"; echo "islands_scaling: the run at $point failed" >&2; exit 1; }
+    --evolution.generations "$generations" --islands.count "$2" --evolution.mode "$3" \
+    --islands.interval "$interval" --quiet --out "$4" > "$4.txt" ||
+    { cat "$4.txt"; echo "islands_scaling: the run at $1:$2 ($3) failed" >&2; exit 1; }
+}
+for point in $points; do
+  ranks=${point%%:*} islands=${point##*:}
+  archipelago "$ranks" "$islands" "$mode" "$work/r${ranks}_i${islands}"
 done
+first=${points%% *}
+archipelago "${first%%:*}" "${first##*:}" generational "$work/calibration"
 
 # the table, with the model's time for each point
-/usr/bin/python3 - "$work" "$cost_us" "$interval" $points <<'EOF'
+/usr/bin/python3 - "$work" "$cost_us" "$interval" "$mode" "$population" $points <<'EOF'
 import csv
 import os
 import sys
@@ -45,7 +55,8 @@ import numpy as np
 sys.path.insert(0, "analysis")
 import scaling_model as sm  # noqa: E402
 
-work, cost, interval, points = sys.argv[1], float(sys.argv[2]) * 1e-6, int(sys.argv[3]), sys.argv[4:]
+work, cost, interval, mode = sys.argv[1], float(sys.argv[2]) * 1e-6, int(sys.argv[3]), sys.argv[4]
+population, points = int(sys.argv[5]), sys.argv[6:]
 
 
 def island_dirs(run):
@@ -58,9 +69,8 @@ def generations(directory):
         return list(csv.DictReader(handle, delimiter="\t"))
 
 
-first = os.path.join(work, "r%s_i%s" % tuple(points[0].split(":")))
-calibration = sm.calibrate(os.path.join(island_dirs(first)[0], "history.h5"))
-print("# %s" % calibration.describe())
+calibration = sm.calibrate(os.path.join(island_dirs(os.path.join(work, "calibration"))[0], "history.h5"))
+print("# %s, %s islands" % (calibration.describe(), mode))
 print("%6s %8s %8s %14s %11s %11s %12s %10s" % ("ranks", "islands", "workers", "generation s", "efficiency",
                                                "rank0 CPU %", "model s", "model err"))
 rng = np.random.default_rng(1)
@@ -78,7 +88,11 @@ for point in points:
     # the model: each island's workers (the layout's larger blocks first, as island_layout)
     per_island = max(1, (ranks - islands) // islands)
     count = int(round(np.mean([int(r["evaluations"]) for r in later[0]])))
-    times = [calibration.time(calibration.draw(count, rng), per_island) for _ in range(sm.ISLAND_SAMPLES)]
+    if mode == "steady_state":
+        times = [sm.steady_time(calibration.draw(8 * population, rng), per_island, population, calibration.latency,
+                                calibration.serial, calibration.overhead) for _ in range(sm.ISLAND_SAMPLES)]
+    else:
+        times = [calibration.time(calibration.draw(count, rng), per_island) for _ in range(sm.ISLAND_SAMPLES)]
     model = sm.archipelago_time(times, islands, interval, "ring", rng=rng) if islands > 1 else float(np.mean(times))
     print("%6d %8d %8d %14.4f %10.1f%% %10.1f%% %12.4f %+9.1f%%" % (
         ranks, islands, workers, seconds, 100 * evaluations * cost / (workers * seconds), 100 * cpu, model,

@@ -58,11 +58,6 @@ struct EvolveSettings {
     worker.declareTestingSettings(schema);
     // the rules across sections
     schema.addCheck([this] {
-      if (evolution.mode == EvolutionMode::steady_state && islands.islands > 1)
-        throw ConfigError("islands.count = " + std::to_string(islands.islands) +
-                          " with evolution.mode = steady_state: islands trade at generation "
-                          "ends, which a steady state has not; use one island or "
-                          "evolution.mode = generational");
       if (!run.arrival_order.empty() && evolution.mode != EvolutionMode::steady_state)
         throw ConfigError("run.arrival_order = " + run.arrival_order +
                           ": only a steady state (evolution.mode = steady_state) follows a "
@@ -378,6 +373,10 @@ int runEvolve(int argc, char** argv) {
     if (island_count > 1) {
       evolution.seed = islandSeed(s.evolution.seed, place.island);
       run.out_dir = s.run.out_dir + "/" + islandDirectoryName(place.island, island_count);
+      // a steady archipelago follows each island's own recorded order
+      if (!run.arrival_order.empty())
+        run.arrival_order = s.run.arrival_order + "/" +
+                            islandDirectoryName(place.island, island_count) + "/history.h5";
     }
     // the other islands' lines go to DIR/island_K/evolve.log, appended (a resume adds to it;
     // where it cannot be written, the run's own writes there fail with the reason)

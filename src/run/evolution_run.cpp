@@ -126,9 +126,7 @@ class EvolutionRun {
       if (last_ && run_.migrations) {
         std::optional<std::vector<Individual>> arrived = run_.migrations->exchange(*last_);
         if (!arrived) {
-          stop_reason = stopReason(g);
-          if (stop_reason.empty())
-            stop_reason = "stopped because another island stopped";
+          stop_reason = anotherIslandStopped(g);
           break;
         }
         immigrants = std::move(*arrived);
@@ -516,6 +514,11 @@ class EvolutionRun {
     std::map<std::uint64_t, StreamedResult> early;  // arrived ahead of the recorded order
     std::vector<Individual> rows;                   // this generation's, in the order taken in
     double busy = 0, dispatch = 0;
+    // islands: a resume takes in the immigrants due after its checkpoint's generation first
+    if (start_ > 0 && !takeInImmigrants(start_ - 1, taken, rows)) {
+      stop_reason = anotherIslandStopped(start_);
+      return start_;
+    }
     auto handOut = [&](Individual individual) {
       auto start = Clock::now();
       evaluator_.submit(individual, settings_.seed);
@@ -576,6 +579,13 @@ class EvolutionRun {
       endSteadyGeneration(g, std::move(rows), busy, dispatch, last || !stop_reason.empty());
       rows.clear();
       busy = dispatch = 0;
+      // islands: the immigrants due now, the next generation's first results (none where the
+      // run ends here); a stop while waiting for them is checkpointed as any other
+      if (!last && stop_reason.empty() && !takeInImmigrants(g, taken, rows)) {
+        stop_reason = anotherIslandStopped(g + 1);
+        if (history_ && checkpointed_ < g + 1)
+          writeRunCheckpoint(g + 1, breeder_.nextId());
+      }
       if (last || !stop_reason.empty()) {
         // a stop: the creatures in flight are in the checkpoint; their results are not waited for
         if (!last)
@@ -584,6 +594,44 @@ class EvolutionRun {
       }
     }
     return taken / P;
+  }
+
+  // islands, a steady state: after generation g this island's emigrants go where due (its
+  // members are the generation's population), and the immigrants due now are taken in as
+  // results, each with the next id, at the same count of results in every run of this layout
+  // (at most P - 1 of them, so that a generation keeps one result of its own). False: the run
+  // must stop (a stop while waiting for them, or another island stopped).
+  bool takeInImmigrants(std::uint64_t g, std::uint64_t& taken, std::vector<Individual>& rows) {
+    if (!run_.migrations)
+      return true;
+    const auto P = static_cast<std::uint64_t>(settings_.population);
+    members_.setGeneration(g);
+    std::optional<std::vector<Individual>> arrived = run_.migrations->exchange(members_.population());
+    members_.setGeneration(g + 1);
+    if (!arrived)
+      return false;
+    std::size_t count = std::min<std::size_t>(arrived->size(), static_cast<std::size_t>(P - 1));
+    for (std::size_t i = 0; i < count; ++i) {
+      Individual immigrant = std::move((*arrived)[i]);
+      immigrant.id = breeder_.nextId();
+      breeder_.setNextId(immigrant.id + 1);
+      immigrant.generation = g + 1;
+      immigrant.origin = Origin::migrant;
+      immigrant.parents.clear();
+      immigrant.eval_seconds = 0;
+      immigrant.worker_rank = -1;
+      immigrant.bred_after = taken;
+      rows.push_back(immigrant);
+      members_.takeIn(std::move(immigrant));
+      ++taken;
+    }
+    return true;
+  }
+
+  // why a run stops before generation g when another island did (or a stop came meanwhile)
+  std::string anotherIslandStopped(std::uint64_t g) const {
+    std::string reason = stopReason(g);
+    return reason.empty() ? "stopped because another island stopped" : reason;
   }
 
   // the next result of a steady state: the next to arrive, or where the run follows a record,
@@ -622,7 +670,10 @@ class EvolutionRun {
     GenerationRecord record;
     record.generation = g;
     record.stats = computeStats(members_.population());
-    record.evaluations = rows.size();
+    // immigrants are results taken in, not evaluated here
+    record.evaluations = static_cast<std::size_t>(
+        std::count_if(rows.begin(), rows.end(),
+                      [](const Individual& row) { return row.origin != Origin::migrant; }));
     record.workers = evaluator_.workers();
     record.evaluation_span_seconds = secondsSince(generation_start_);
     record.rank0_dispatch_seconds = dispatch;

@@ -55,7 +55,8 @@ void RunSettings::declareSettings(SettingsSchema& s) {
         "evolution.mode = steady_state: a history.h5 of this run's settings whose order of "
         "results taken in (its rows) and each child's bred_after this run follows, so that it "
         "repeats that run bit for bit at any rank count; past the recorded rows it goes on as "
-        "results arrive (empty: as they arrive)")
+        "results arrive (empty: as they arrive); with islands (islands.count > 1), the earlier "
+        "run's directory, whose island_K/history.h5 island K follows")
       .runOnly();
   s.add("run.test_kill_at", r.test_kill_at,
         "testing: rank 0 SIGKILLs itself at POINT:GENERATION, POINT one of evaluation, history, "

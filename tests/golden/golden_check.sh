@@ -111,6 +111,13 @@ case $mode in
     np=1 evolve steady_synthetic "${steady[@]}"
     evolve steady_synthetic_followed "${steady[@]}" \
       --run.arrival_order "$work/steady_synthetic/history.h5"
+    # islands of steady states trading every 2 generations: each island in process (2 ranks,
+    # 2 islands), and at NP ranks (2 or more) following those islands' recorded orders
+    islands=("${steady[@]}" --islands.count 2 --islands.interval 2)
+    np=2 evolve steady_islands "${islands[@]}"
+    if [ "$np" -gt 1 ]; then
+      evolve steady_islands_followed "${islands[@]}" --run.arrival_order "$work/steady_islands"
+    fi
     ;;
   walk)
     evolve walk --config "$source_dir/jobs/experiments/walk.ini" --evolution.population 16 \

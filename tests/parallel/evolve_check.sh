@@ -34,7 +34,11 @@
 #                   at NP ranks from its history's order (run.arrival_order), every worker took
 #                   part, not the generational run; killed in generation 2 and resumed at
 #                   another rank count, its history repeated in process gives its digest;
-#                   with islands, and run.arrival_order without a steady state: exit 3
+#                   islands of steady states (islands.count 2, trading every generation): at NP
+#                   ranks, followed at 2 ranks from the islands' histories (run.arrival_order
+#                   DIR), the same island digests; migrants the first results of generations
+#                   2 and 3 of each island; killed and resumed at another rank count, followed
+#                   again to its digests; run.arrival_order without a steady state: exit 3
 #   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
 #                   the run's wall time (a busy-polling rank 0 would use all of it)
 # Every job runs under `timeout`: a job still running after $limit s is a failure (a rank that
@@ -233,11 +237,44 @@ case $mode in
       --run.arrival_order "$work/resumed/history.h5"
     expect_rc replayed 0
     expect_same_run resumed replayed
+    # islands of steady states: each island follows its own history to the same digests
+    islands=(--config "$work/run.ini" --evolution.mode steady_state --islands.count 2
+      --islands.interval 1)
+    job islands "$np" "${islands[@]}" --out "$work/islands"
+    expect_rc islands 0
+    job islands_followed 2 "${islands[@]}" --out "$work/islands_followed" \
+      --run.arrival_order "$work/islands"
+    expect_rc islands_followed 0
+    [ "$(grep -c '^island ' "$work/islands.out")" -eq 2 ] || fail "islands: not two island lines"
+    diff <(grep '^island ' "$work/islands.out") <(grep '^island ' "$work/islands_followed.out") ||
+      fail "steady islands followed at 2 ranks: other digests"
+    for k in 0 1; do
+      migrants=$(awk -F'\t' '$4 == "migrant" { print $1 }' \
+        "$work/islands/island_$k/individuals.tsv" | tr '\n' ' ')
+      [ "$migrants" = "2 2 3 3 " ] || fail "island_$k: migrants in generations '$migrants'"
+    done
+    echo "steady islands at $np ranks: $(grep '^island ' "$work/islands.out" | tr '\n' ' ')"
+    # killed in generation 2 (after a migration) and resumed at another rank count
+    started=$SECONDS
+    set +e
+    timeout -k 10 "$limit" "$mpiexec" "$npflag" "$np" --oversubscribe "$cambrian" evolve \
+      "${islands[@]}" --out "$work/islands_resumed" --run.checkpoint_every 1 \
+      --run.test_kill_at evaluation:2 > "$work/islands_killed.out" 2> "$work/islands_killed.err"
+    rc=$?
+    set -e
+    [ $((SECONDS - started)) -lt "$limit" ] || fail "islands killed: still running after $limit s"
+    [ "$rc" -ne 0 ] || fail "islands killed: exit 0, expected the kill"
+    job islands_resumed "$other" "${islands[@]}" --out "$work/islands_resumed"
+    expect_rc islands_resumed 0
+    expect_text "$work/islands_resumed.out" "resuming from $work/islands_resumed/island_0/checkpoint.h5"
+    expect_text "$work/islands_resumed/island_1/evolve.log" "resuming from"
+    job islands_replayed 2 "${islands[@]}" --out "$work/islands_replayed" \
+      --run.arrival_order "$work/islands_resumed"
+    expect_rc islands_replayed 0
+    diff <(grep '^island ' "$work/islands_resumed.out") \
+      <(grep '^island ' "$work/islands_replayed.out") ||
+      fail "steady islands resumed, then followed: other digests"
     # what a steady state cannot do
-    job islands "$np" --config "$work/run.ini" --out "$work/islands" \
-      --evolution.mode steady_state --islands.count 2
-    expect_rc islands 3
-    expect_text "$work/islands.err" "islands.count = 2 with evolution.mode = steady_state"
     job not_steady "$np" --config "$work/run.ini" --out "$work/not_steady" \
       --run.arrival_order "$work/steady/history.h5"
     expect_rc not_steady 3
