@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <deque>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -103,6 +104,12 @@ class EvolutionRun {
       breeder_.setViabilityCheck(run.viable);
   }
 
+  // a steady state's writer thread ends before the members it reads go
+  ~EvolutionRun() {
+    if (writer_.valid())
+      writer_.wait();
+  }
+
   RunResult run() {
     // a steady state's recorded order, read before the output directory is touched
     if (steady_ && !run_.arrival_order.empty())
@@ -114,8 +121,10 @@ class EvolutionRun {
       announceEpoch();
     std::string stop_reason;
     std::uint64_t g = start_;
-    if (steady_)
+    if (steady_) {
       g = runSteadyState(stop_reason);
+      joinWriter();
+    }
     for (; !steady_ && g < total_; ++g) {
       // a clean stop: the last generation written and checkpointed, then out
       stop_reason = stopReason(g);
@@ -275,15 +284,25 @@ class EvolutionRun {
     state.next_id = next_id;
     state.digest = digest_.value();
     state.rank_count = run_.rank_count;
-    // a steady state: the members and, unevaluated, the creatures handed out
+    // a steady state: the members and, unevaluated, the creatures handed out (as they were at
+    // the generation's end, where the writer thread writes it)
     if (steady_) {
       state.steady_state = true;
-      state.population = steadyCheckpointPopulation();
+      if (pending_ && pending_->steady_snapshot) {
+        state.population = std::move(*pending_->steady_snapshot);
+        pending_->steady_snapshot.reset();
+      } else {
+        state.population = steadyCheckpointPopulation();
+      }
     } else {
       state.population = *last_;
     }
-    if (run_.migrations)
-      state.migrations = run_.migrations->checkpointState();
+    if (run_.migrations) {
+      if (pending_ && pending_->migrations_snapshot)
+        state.migrations = std::move(*pending_->migrations_snapshot);
+      else
+        state.migrations = run_.migrations->checkpointState();
+    }
     writeCheckpoint(run_.out_dir, state, [&](const std::string& stage) {
       testKillPoint("checkpoint_" + stage, next_generation - 1);
     });
@@ -319,7 +338,9 @@ class EvolutionRun {
     digest_.add(*last_);
     retired_.reset();
     GenerationRecord& record = result_.generations[pending_->record];
-    record.distinct_genomes = distinctGenomes(steady_ ? members_.population() : *last_);
+    // (a steady state's: counted from its members at the generation's end)
+    if (!steady_)
+      record.distinct_genomes = distinctGenomes(*last_);
     if (!history_) {
       pending_.reset();
       return;
@@ -366,19 +387,23 @@ class EvolutionRun {
     warnOfRepairs();
     testKillPoint("history", g);
 
-    // a checkpoint every checkpoint_every generations or checkpoint_minutes, after the first
-    // (a history never holds generations without one for long) and at the end
-    bool due = final_write || g == 0 || g + 1 == total_ ||
-               (run_.checkpoint_every > 0 &&
-                g + 1 - checkpointed_ >= static_cast<std::uint64_t>(run_.checkpoint_every)) ||
-               (run_.checkpoint_minutes > 0 &&
-                secondsSince(checkpoint_time_) >= run_.checkpoint_minutes * 60);
+    const bool due = final_write || pending_->steady_snapshot || checkpointDue(g);
     record.checkpoint_seconds = due ? writeRunCheckpoint(g + 1, pending_->next_id) : 0;
     // the last generation's times include its append and checkpoint
     if (final_write)
       closeTimes(record);
     history_->completeLastGeneration(record);
     warnOfRepairs();
+  }
+
+  // a checkpoint after generation g every checkpoint_every generations or checkpoint_minutes,
+  // after the first (a history never holds generations without one for long) and the last
+  bool checkpointDue(std::uint64_t g) const {
+    return g == 0 || g + 1 == total_ ||
+           (run_.checkpoint_every > 0 &&
+            g + 1 - checkpointed_ >= static_cast<std::uint64_t>(run_.checkpoint_every)) ||
+           (run_.checkpoint_minutes > 0 &&
+            secondsSince(checkpoint_time_) >= run_.checkpoint_minutes * 60);
   }
 
   // why the run should stop before generation g ("" to go on)
@@ -564,12 +589,17 @@ class EvolutionRun {
       if (live)
         liveLine(g, static_cast<std::size_t>(taken - g * P), static_cast<std::size_t>(P));
       // testing aid: a kill in the middle of a generation
-      if (taken - g * P == (P + 1) / 2)
+      // (the point is defined after the previous generation's writes)
+      if (taken - g * P == (P + 1) / 2) {
+        if (testKillArmed("evaluation", g))
+          joinWriter();
         testKillPoint("evaluation", g);
+      }
       if (taken % P != 0)
         continue;
 
       // a generation's worth taken in: its record, history rows and checkpoint
+      joinWriter();
       if (live)
         clearLiveLine();
       members_.setGeneration(g + 1);
@@ -583,6 +613,7 @@ class EvolutionRun {
       // run ends here); a stop while waiting for them is checkpointed as any other
       if (!last && stop_reason.empty() && !takeInImmigrants(g, taken, rows)) {
         stop_reason = anotherIslandStopped(g + 1);
+        joinWriter();
         if (history_ && checkpointed_ < g + 1)
           writeRunCheckpoint(g + 1, breeder_.nextId());
       }
@@ -687,15 +718,34 @@ class EvolutionRun {
     last_ = Population{g, std::move(rows)};
     result_.generations.push_back(record);
     walls_.push_back(record.wall_seconds);
-    pending_ = Pending{result_.generations.size() - 1, breeder_.nextId()};
+    pending_ = Pending{result_.generations.size() - 1, breeder_.nextId(), std::nullopt,
+                       std::nullopt};
+    result_.generations.back().distinct_genomes = distinctGenomes(members_.population());
+    progress(g, result_.generations.back(), 0);
+    if (final_write) {
+      finishPending(true);
+      return;
+    }
     // the next generation's time starts here, this one's history append and checkpoint
     // included (the last one's: in its own, as a generational run's)
-    if (!final_write) {
-      generation_start_ = Clock::now();
-      generation_cpu_start_ = processCpuSeconds();
+    generation_start_ = Clock::now();
+    generation_cpu_start_ = processCpuSeconds();
+    // the history rows and a due checkpoint on a thread beside the stream, as a generational
+    // run's beside its hand-outs: what it reads of the run is this generation's and stays put
+    // until joinWriter (the members and the creatures out, which move on, copied here)
+    if (history_ && checkpointDue(g)) {
+      pending_->steady_snapshot = steadyCheckpointPopulation();
+      if (run_.migrations)
+        pending_->migrations_snapshot = run_.migrations->checkpointState();
     }
-    finishPending(final_write);
-    progress(g, result_.generations.back(), 0);
+    writer_ = std::async(std::launch::async, [this] { finishPending(false); });
+  }
+
+  // waits for a steady state's writer thread (rethrowing its error); every read of what it
+  // writes (the history, the checkpoint's times, the digest, the last generation) comes after
+  void joinWriter() {
+    if (writer_.valid())
+      writer_.get();
   }
 
   // a steady state's checkpoint: the members and the creatures in flight, in id order
@@ -774,6 +824,10 @@ class EvolutionRun {
   struct Pending {
     std::size_t record = 0;  // index into result_.generations
     std::uint64_t next_id = 0;
+    // a steady state's checkpoint when one is due: the members and creatures out, and the
+    // migrations' state, as they were at the generation's end
+    std::optional<Population> steady_snapshot;
+    std::optional<std::vector<std::uint8_t>> migrations_snapshot;
   };
 
   const EvolutionSettings& settings_;
@@ -799,6 +853,7 @@ class EvolutionRun {
   std::optional<RunLock> lock_;
   std::unique_ptr<HistoryWriter> history_;
   std::optional<Population> last_;     // the last evaluated generation
+  std::future<void> writer_;  // a steady state's history rows and checkpoint, being written
   std::optional<Population> retired_;  // the generation before `last_`, freed in the same slot
   std::optional<Pending> pending_;
   std::vector<double> walls_;  // generation wall times, for the max-hours prediction
