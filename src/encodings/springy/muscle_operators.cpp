@@ -80,6 +80,9 @@ void mutateParameters(Organism& organism, const MuscleOperatorSettings& settings
     if (which == 0) {
       drawRestAndAmplitude(tube.muscle, initialLength(organism, tube),
                            touchingLength(organism, tube), settings.limits.max_length, rng);
+      // frozen: a still muscle (a hand-made seed's) that now swings does so at the frozen frequency
+      if (!settings.evolve_frequency)
+        tube.muscle.frequency = settings.frozen_frequency;
     } else if (which == 1) {
       tube.muscle.frequency = drawFrequency(settings, rng);
     } else if (settings.flip_first_move) {

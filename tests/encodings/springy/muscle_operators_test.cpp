@@ -209,6 +209,28 @@ TEST(MuscleOperators, AFrozenFrequencyNeverChanges) {
   }
 }
 
+// frozen: a hand-made seed's still muscles (amplitude 0, no frequency) that a parametric
+// mutation sets swinging swing at the frozen frequency (else they would stay still for ever)
+TEST(MuscleOperators, AStillMuscleSetSwingingTakesTheFrozenFrequency) {
+  MuscleOperatorSettings settings;
+  settings.evolve_frequency = false;
+  settings.frozen_frequency = 1.5;
+  settings.mutation = MuscleMutation::parametric;
+  int swinging = 0;
+  for (std::uint64_t k = 0; k < 100; ++k) {
+    Rng rng(6, RngPurpose::test, 0, k);
+    const Organism mutant = mutateMuscles(snake(), settings, rng);
+    for (int m : muscleIndices(mutant)) {
+      const Muscle& muscle = mutant.tubes[static_cast<std::size_t>(m)].muscle;
+      if (muscle.amplitude > 0) {
+        ++swinging;
+        ASSERT_EQ(muscle.frequency, 1.5);
+      }
+    }
+  }
+  EXPECT_GT(swinging, 50);
+}
+
 // Algorithm 3.7: each muscle from the mother or the father, about half from each at p = 0.5;
 // identical parents give an identical child; two morphologies cannot be crossed
 TEST(MuscleOperators, UniformCrossoverTakesEachMuscleFromAParent) {
