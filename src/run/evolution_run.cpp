@@ -637,7 +637,8 @@ class EvolutionRun {
       return true;
     const auto P = static_cast<std::uint64_t>(settings_.population);
     members_.setGeneration(g);
-    std::optional<std::vector<Individual>> arrived = run_.migrations->exchange(members_.population());
+    std::optional<std::vector<Individual>> arrived =
+        run_.migrations->exchange(members_.population());
     members_.setGeneration(g + 1);
     if (!arrived)
       return false;
@@ -702,9 +703,10 @@ class EvolutionRun {
     record.generation = g;
     record.stats = computeStats(members_.population());
     // immigrants are results taken in, not evaluated here
-    record.evaluations = static_cast<std::size_t>(
-        std::count_if(rows.begin(), rows.end(),
-                      [](const Individual& row) { return row.origin != Origin::migrant; }));
+    record.evaluations =
+        static_cast<std::size_t>(std::count_if(rows.begin(), rows.end(), [](const Individual& row) {
+          return row.origin != Origin::migrant;
+        }));
     record.workers = evaluator_.workers();
     record.evaluation_span_seconds = secondsSince(generation_start_);
     record.rank0_dispatch_seconds = dispatch;
@@ -718,8 +720,8 @@ class EvolutionRun {
     last_ = Population{g, std::move(rows)};
     result_.generations.push_back(record);
     walls_.push_back(record.wall_seconds);
-    pending_ = Pending{result_.generations.size() - 1, breeder_.nextId(), std::nullopt,
-                       std::nullopt};
+    pending_ =
+        Pending{result_.generations.size() - 1, breeder_.nextId(), std::nullopt, std::nullopt};
     result_.generations.back().distinct_genomes = distinctGenomes(members_.population());
     progress(g, result_.generations.back(), 0);
     if (final_write) {
@@ -852,8 +854,8 @@ class EvolutionRun {
   RunDigest digest_;
   std::optional<RunLock> lock_;
   std::unique_ptr<HistoryWriter> history_;
-  std::optional<Population> last_;     // the last evaluated generation
-  std::future<void> writer_;  // a steady state's history rows and checkpoint, being written
+  std::optional<Population> last_;  // the last evaluated generation
+  std::future<void> writer_;        // a steady state's history rows and checkpoint, being written
   std::optional<Population> retired_;  // the generation before `last_`, freed in the same slot
   std::optional<Pending> pending_;
   std::vector<double> walls_;  // generation wall times, for the max-hours prediction
