@@ -85,7 +85,7 @@ import scaling  # noqa: E402
 PROGRAM = "scaling_model"
 LIMITS = ("work", "dispatch", "barrier", "serial", "migration")
 BARRIER_SLACK = 1.25  # zero-latency span / (total cost / W) above which the barrier is the bound
-MARKERS = {"work": "o", "dispatch": "s", "barrier": "^", "serial": "D", "migration": "v"}
+MARKERS = {"work": "o", "dispatch": "s", "barrier": "^", "serial": "D", "migration": "v", "cap": "x"}
 MIGRATION_SLACK = 1.1  # archipelago / island generation time above which migration is the bound
 ISLAND_GENERATIONS = 100  # generations simulated per archipelago point
 ISLAND_SAMPLES = 20  # island generation times an archipelago point draws from (at least)
@@ -130,6 +130,9 @@ def parse_arguments(argv):
     parser.add_argument("--interval", type=int, default=10, help="islands: generations between migrations (default 10)")
     parser.add_argument("--topology", choices=("ring", "full", "random"), default="ring",
                         help="islands: where migrants go (default ring)")
+    parser.add_argument("--steady-state", action="store_true",
+                        help="project steady states (evolution.mode = steady_state), islands of them "
+                        "with --island-workers")
     parser.add_argument("-o", "--output", default="scaling_model.png", help="PNG to write (default: scaling_model.png)")
     parser.add_argument("--table", default=None, help="also write the projection table to this TSV file")
     parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNG (default: 120)")
@@ -406,25 +409,39 @@ def steady_time(costs, workers, population, latency, serial, overhead=0.0, in_fl
 
 
 def project(calibration, populations, worker_counts, samples=5, seed=1, island_workers=None, interval=10,
-            topology="ring"):
+            topology="ring", steady=False):
     """Rows (dicts) population, workers, islands, evaluations, time, speedup, efficiency, limit.
     With `island_workers` w, worker counts of 2w and more are W // w islands of w workers (the
-    population per island; time is the archipelago's mean generation time)."""
+    population per island; time is the archipelago's mean generation time). `steady`: every
+    population (island) a steady state, its generation `steady_time`'s over 8 generations of
+    costs (all `population` evaluated; limit "cap" where a population has more workers than the
+    population // 2 it keeps out, else "work")."""
     rows = []
     for population in populations:
         rng = np.random.default_rng([seed, population])
-        count = max(1, int(round(population * calibration.evaluated_share)))
-        draws = [calibration.draw(count, rng) for _ in range(samples)]
-        base = np.mean([calibration.time(c, 1) for c in draws])
+        count = population if steady else max(1, int(round(population * calibration.evaluated_share)))
+        per_draw = 8 * population if steady else count
+        draws = [calibration.draw(per_draw, rng) for _ in range(samples)]
+
+        def generation(costs, workers):
+            if steady:
+                return steady_time(costs, workers, population, calibration.latency, calibration.serial,
+                                   calibration.overhead)
+            return calibration.time(costs, workers)
+
+        base = np.mean([generation(c, 1) for c in draws])
         for workers in worker_counts:
             islands = workers // island_workers if island_workers and workers >= 2 * island_workers else 1
             per_island = workers // islands
             # an archipelago draws each island's generations from more generations than a point
-            island_draws = draws + [calibration.draw(count, rng) for _ in range(ISLAND_SAMPLES - samples)] \
+            island_draws = draws + [calibration.draw(per_draw, rng) for _ in range(ISLAND_SAMPLES - samples)] \
                 if islands > 1 else draws
-            times = [calibration.time(c, per_island) for c in island_draws]
-            limits = [calibration.limit(c, per_island) for c in draws]
-            limit = max(set(limits), key=limits.count)
+            times = [generation(c, per_island) for c in island_draws]
+            if steady:
+                limit = "cap" if per_island > max(1, population // 2) else "work"
+            else:
+                limits = [calibration.limit(c, per_island) for c in draws]
+                limit = max(set(limits), key=limits.count)
             time = float(np.mean(times))
             if islands > 1:
                 # the islands' waits for each other, as a factor on the island's own time
@@ -526,7 +543,7 @@ def main(argv=None):
     # projection
     worker_counts = [2 ** k for k in range(int(np.log2(arguments.max_workers)) + 1)]
     rows = project(calibration, arguments.populations, worker_counts, arguments.samples, arguments.seed,
-                   arguments.island_workers, arguments.interval, arguments.topology)
+                   arguments.island_workers, arguments.interval, arguments.topology, arguments.steady_state)
     lines = ["population\tworkers\tislands\tevaluations\tgeneration_seconds\tspeedup\tefficiency\tlimit"]
     lines += [f"{r['population']}\t{r['workers']}\t{r['islands']}\t{r['evaluations']}\t{r['time']:.6g}\t"
               f"{r['speedup']:.4g}\t{r['efficiency']:.4f}\t{r['limit']}" for r in rows]
@@ -549,6 +566,8 @@ def main(argv=None):
             print(f"{m['workers']}\t{m['measured']:.6g}\t{m['model']:.6g}\t{m['error']:+.3f}\t"
                   f"{m['measured_speedup']:.4g}\t{m['model_speedup']:.4g}")
     title = "scaling model: " + os.path.basename(calibration.source)
+    if arguments.steady_state:
+        title += ", steady states"
     if arguments.island_workers:
         title += f", islands of {arguments.island_workers} workers (every {arguments.interval}, {arguments.topology})"
     plot(rows, measured, arguments.output, title, arguments.dpi)

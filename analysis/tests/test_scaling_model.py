@@ -224,3 +224,22 @@ def test_steady_state_has_no_barrier_and_caps_what_is_out():
     capped = sm.steady_time(costs, 300, 300, 0.0, 0.0)
     assert capped == pytest.approx(sm.steady_time(costs, 150, 300, 0.0, 0.0), rel=0.05)
     assert capped >= 0.95 * 300 * np.mean(costs) / 150
+
+
+# islands of steady states: K islands of w workers give K times one island's throughput (equal
+# costs), each island's generation is steady_time's, and a population spread over more workers
+# than the half it keeps out is "cap"-bound
+def test_projection_with_islands_of_steady_states():
+    calibration = sm.Calibration(cost_mean=0.01, serial=0.001, latency=0.0, evaluated_share=0.8)
+    rows = sm.project(calibration, [64], [1, 8, 64], samples=2, island_workers=8, steady=True)
+    by_workers = {r["workers"]: r for r in rows}
+    assert [by_workers[w]["islands"] for w in (1, 8, 64)] == [1, 1, 8]
+    # every result is evaluated: no elites in a steady state
+    assert all(r["evaluations"] == 64 for r in rows)
+    assert by_workers[64]["speedup"] == pytest.approx(8 * by_workers[8]["speedup"])
+    assert by_workers[8]["limit"] == "work"
+    capped = sm.project(calibration, [64], [1, 64], samples=2, steady=True)
+    assert capped[-1]["limit"] == "cap" and capped[-1]["efficiency"] < 0.6
+    # the generational islands of the same layout wait for their slowest creature; these do not
+    generational = sm.project(calibration, [64], [1, 64], samples=2, island_workers=8)
+    assert by_workers[64]["efficiency"] >= generational[-1]["efficiency"] - 1e-9
