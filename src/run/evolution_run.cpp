@@ -488,7 +488,8 @@ class EvolutionRun {
     last_ = std::move(population);
     result_.generations.push_back(record);
     walls_.push_back(record.wall_seconds);
-    pending_ = Pending{result_.generations.size() - 1, breeder_.nextId()};
+    pending_ =
+        Pending{result_.generations.size() - 1, breeder_.nextId(), std::nullopt, std::nullopt};
     progress(g, record, reuse.from_parents + reuse.siblings.size());
 
     // the next generation's epoch
