@@ -62,6 +62,13 @@ struct EvolveSettings {
         throw ConfigError("run.arrival_order = " + run.arrival_order +
                           ": only a steady state (evolution.mode = steady_state) follows a "
                           "recorded order of results");
+      std::error_code error;
+      if (!run.arrival_order.empty() && islands.islands > 1 &&
+          !std::filesystem::is_directory(run.arrival_order, error))
+        throw ConfigError("run.arrival_order = " + run.arrival_order +
+                          ": with islands.count = " + std::to_string(islands.islands) +
+                          " it names the earlier run's directory, whose island_K/history.h5 "
+                          "island K follows; this is no directory");
     });
   }
 };

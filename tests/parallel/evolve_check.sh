@@ -38,7 +38,8 @@
 #                   ranks, followed at 2 ranks from the islands' histories (run.arrival_order
 #                   DIR), the same island digests; migrants the first results of generations
 #                   2 and 3 of each island; killed and resumed at another rank count, followed
-#                   again to its digests; run.arrival_order without a steady state: exit 3
+#                   again to its digests; a history file as the islands' run.arrival_order,
+#                   and run.arrival_order without a steady state: exit 3, nothing written
 #   rank0_idle:     rank 0 sleeps while the workers evaluate: its CPU time stays a small part of
 #                   the run's wall time (a busy-polling rank 0 would use all of it)
 # Every job runs under `timeout`: a job still running after $limit s is a failure (a rank that
@@ -274,6 +275,12 @@ case $mode in
     diff <(grep '^island ' "$work/islands_resumed.out") \
       <(grep '^island ' "$work/islands_replayed.out") ||
       fail "steady islands resumed, then followed: other digests"
+    # with islands, a recorded order is the earlier run's directory, not a history file
+    job islands_file "$np" "${islands[@]}" --out "$work/islands_file" \
+      --run.arrival_order "$work/islands/island_0/history.h5"
+    expect_rc islands_file 3
+    expect_text "$work/islands_file.err" "it names the earlier run's directory"
+    expect_nothing_written "$work/islands_file"
     # what a steady state cannot do
     job not_steady "$np" --config "$work/run.ini" --out "$work/not_steady" \
       --run.arrival_order "$work/steady/history.h5"
