@@ -111,20 +111,23 @@ std::vector<std::size_t> emigrants(const Population& population, int count) {
   return chosen;
 }
 
+Individual asImmigrant(Individual immigrant, std::uint64_t id, std::uint64_t generation) {
+  immigrant.id = id;
+  immigrant.generation = generation;
+  immigrant.origin = Origin::migrant;
+  immigrant.parents.clear();
+  immigrant.eval_seconds = 0;
+  immigrant.worker_rank = -1;
+  return immigrant;
+}
+
 std::size_t placeImmigrants(Population& next, const std::vector<Individual>& immigrants) {
   std::size_t placed = 0;
   for (std::size_t i = next.individuals.size(); i-- > 0 && placed < immigrants.size();) {
     Individual& place = next.individuals[i];
     if (place.evaluated || place.origin == Origin::elite)
       continue;
-    Individual immigrant = immigrants[placed++];
-    immigrant.id = place.id;
-    immigrant.generation = place.generation;
-    immigrant.origin = Origin::migrant;
-    immigrant.parents.clear();
-    immigrant.eval_seconds = 0;
-    immigrant.worker_rank = -1;
-    place = std::move(immigrant);
+    place = asImmigrant(immigrants[placed++], place.id, place.generation);
   }
   return placed;
 }

@@ -82,6 +82,10 @@ std::uint64_t islandSeed(std::uint64_t run_seed, int island);
 /// to the lower id), fewer when it holds fewer.
 std::vector<std::size_t> emigrants(const Population& population, int count);
 
+/// `immigrant` as it joins this island: the id and generation given, origin migrant, no parents
+/// here, its genome and outcome kept (not evaluated here: no time, no worker).
+Individual asImmigrant(Individual immigrant, std::uint64_t id, std::uint64_t generation);
+
 /// Places `immigrants` in the bred generation `next`: each takes the place, id and generation
 /// of one of its last bred individuals (the highest ids; never an elite or an individual that
 /// already holds an outcome), keeps its genome and outcome, and becomes origin migrant with no

@@ -387,7 +387,9 @@ class EvolutionRun {
     warnOfRepairs();
     testKillPoint("history", g);
 
-    const bool due = final_write || pending_->steady_snapshot || checkpointDue(g);
+    // (a steady state's was decided at its generation's end, where the writer's copy was made)
+    const bool due =
+        final_write || (steady_ ? pending_->steady_snapshot.has_value() : checkpointDue(g));
     record.checkpoint_seconds = due ? writeRunCheckpoint(g + 1, pending_->next_id) : 0;
     // the last generation's times include its append and checkpoint
     if (final_write)
@@ -645,14 +647,8 @@ class EvolutionRun {
       return false;
     std::size_t count = std::min<std::size_t>(arrived->size(), static_cast<std::size_t>(P - 1));
     for (std::size_t i = 0; i < count; ++i) {
-      Individual immigrant = std::move((*arrived)[i]);
-      immigrant.id = breeder_.nextId();
+      Individual immigrant = asImmigrant(std::move((*arrived)[i]), breeder_.nextId(), g + 1);
       breeder_.setNextId(immigrant.id + 1);
-      immigrant.generation = g + 1;
-      immigrant.origin = Origin::migrant;
-      immigrant.parents.clear();
-      immigrant.eval_seconds = 0;
-      immigrant.worker_rank = -1;
       immigrant.bred_after = taken;
       rows.push_back(immigrant);
       members_.takeIn(std::move(immigrant));
