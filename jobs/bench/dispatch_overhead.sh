@@ -7,8 +7,11 @@
 # what a sleep's wake-up latency does not count in). Peers, where their Debian packages are
 # installed: DEAP with multiprocessing.Pool and with mpi4py.futures (python3-deap,
 # python3-mpi4py), pagmo2's thread batch evaluator (libpagmo-dev). Figures and their reading:
-# docs/performance.md.
-# usage: jobs/bench/dispatch_overhead.sh [path/to/cambrian] [spin|sleep|both] [quick]
+# docs/performance.md. cambrian's creatures are directed-graph genomes of about 5 KB (rows
+# `cambrian`, `cambrian_steady`) and springy Snakes, 6 muscles of 4 numbers each, as small as the
+# peers' 20 floats (rows `cambrian_springy`, `cambrian_steady_springy`).
+# usage: [GENOMES="graph springy"] jobs/bench/dispatch_overhead.sh [path/to/cambrian]
+#          [spin|sleep|both] [quick]
 #   quick: two generations per cost (a smoke test; the figures mean little)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -21,6 +24,11 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 workers=2
 python=/usr/bin/python3
+genomes=${GENOMES:-graph springy}
+# the springy Snake's settings (its operators: no grafting)
+springy=(--genome.encoding springy --springy.organism jobs/creatures/springy/snake.organism
+  --evolution.graft_fraction 0 --evolution.crossover_fraction 0.5
+  --evolution.mutation_fraction 0.5)
 
 # generations per cost: a few seconds of work each
 generations() {
@@ -43,29 +51,34 @@ if [ -f /usr/include/pagmo/batch_evaluators/thread_bfe.hpp ] &&
   peers+=(pagmo_thread_bfe)
 fi
 
-printf "%-6s %-9s %-18s %11s %9s %13s %17s %13s\n" work "cost (us)" system evaluations "wall (s)" \
+printf "%-6s %-9s %-23s %11s %9s %13s %17s %13s\n" work "cost (us)" system evaluations "wall (s)" \
   "overhead (us)" "beyond eval (us)" "rank 0 CPU %"
 for spend in $works; do
   for cost in 100 1000 10000; do
     g=$(generations "$cost")
     # cambrian, generational and steady state: the generations' own times (startup and the
     # final tables left out, as for peers)
+    for genome in $genomes; do
     for mode in generational steady_state; do
       system=cambrian
       [ "$mode" = steady_state ] && system=cambrian_steady
+      extra=()
+      [ "$genome" = springy ] && system=${system}_springy extra=("${springy[@]}")
       out="$work/$system-$spend-$cost"
       mpirun -np $((workers + 1)) --oversubscribe "$cambrian" evolve \
         --config jobs/experiments/synthetic.ini --task.synthetic_distribution fixed \
         --task.synthetic_cost_us "$cost" --task.synthetic_work "$spend" \
-        --evolution.generations "$g" --evolution.mode "$mode" --quiet --out "$out" > "$out.txt"
+        --evolution.generations "$g" --evolution.mode "$mode" --quiet --out "$out" \
+        ${extra[@]+"${extra[@]}"} > "$out.txt"
       read -r evals wall cpu busy <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
         { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"]
           b += $col["worker_busy_seconds"] }
         END { printf "%d %.6f %.6f %.6f", e, w, c, b }' "$out/generations.tsv")"
-      printf "%-6s %-9s %-18s %11s %9.3f %13s %17s %13.1f\n" "$spend" "$cost" "$system" "$evals" \
+      printf "%-6s %-9s %-23s %11s %9.3f %13s %17s %13.1f\n" "$spend" "$cost" "$system" "$evals" \
         "$wall" "$(overhead "$evals" "$wall" $workers "$cost")" \
         "$(awk -v e="$evals" -v w="$wall" -v b="$busy" -v n=$workers 'BEGIN { printf "%.1f", (w * n - b) / e * 1e6 }')" \
         "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
+    done
     done
     for peer in "${peers[@]}"; do
       case $peer in
@@ -77,7 +90,7 @@ for spend in $works; do
         pagmo_thread_bfe) line=$("$work/pagmo_overhead" "$cost" "$spend" 300 "$g") ;;
       esac
       read -r _ evals _ wall _ threads <<< "$line"
-      printf "%-6s %-9s %-18s %11s %9.3f %13s %17s %13s\n" "$spend" "$cost" "$peer" "$evals" "$wall" \
+      printf "%-6s %-9s %-23s %11s %9.3f %13s %17s %13s\n" "$spend" "$cost" "$peer" "$evals" "$wall" \
         "$(overhead "$evals" "$wall" "$threads" "$cost")" "-" "-"
     done
   done

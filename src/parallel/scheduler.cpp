@@ -86,9 +86,14 @@ EvalResult resultFrom(const Message& message) {
 }
 
 // rank 0's next sleep: `relaxed` (DispatchPace::relaxedMicros, while every worker has work
-// queued) or, when that is 0, short looks within a quarter of an evaluation of `mean` seconds
-void paceWait(Backoff& backoff, long relaxed, double mean) {
-  if (relaxed > 0)
+// queued) or, when that is 0, short looks within a quarter of an evaluation of `mean` seconds;
+// but never shorter than `earliest` (ExpectedArrivals: no result can be there before), at most
+// the longest relaxed sleep
+void paceWait(Backoff& backoff, long relaxed, double mean, long earliest) {
+  earliest = std::min(earliest, DispatchPace::kMaxRelaxedMicros);
+  if (earliest > std::max(relaxed, Backoff::kMin))
+    backoff.range(earliest, earliest);
+  else if (relaxed > 0)
     backoff.range(relaxed, relaxed);
   else
     backoff.range(Backoff::kMin, std::min(Backoff::quarterOf(mean), Backoff::kUrgent));
@@ -209,7 +214,10 @@ long DispatchPace::relaxedMicros(double mean_seconds, int held) const {
 }
 
 MpiScheduler::MpiScheduler(MpiContext& mpi, const DispatchSettings& dispatch, int in_flight)
-    : mpi_(mpi), dispatch_(dispatch), stream_held_(static_cast<std::size_t>(mpi.size()), 0) {
+    : mpi_(mpi),
+      dispatch_(dispatch),
+      arrivals_(mpi.size()),
+      stream_held_(static_cast<std::size_t>(mpi.size()), 0) {
   pace_.in_flight = std::max(1, in_flight);
   if (mpi.size() < 2)
     throw Error(ExitCode::mpi, "MpiScheduler needs at least 2 ranks");
@@ -248,6 +256,7 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
                                         population.individuals.size())));
     outstanding_for[index] = 1;
     ++outstanding;
+    arrivals_.handed(worker, held[static_cast<std::size_t>(worker)], Clock::now());
     ++held[static_cast<std::size_t>(worker)];
   };
   // the mean evaluation so far in this generation, else the last generation's
@@ -308,8 +317,12 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     if (!mpi_.tryReceive(Tag::result, message)) {
       // while every worker has work queued, nothing is urgent: sleep a quarter of it; when a
       // worker holds only the creature it evaluates (it may be waiting for the next), and once
-      // everything is handed out (the generation ends with the last result), look often
-      paceWait(backoff, next < order.size() ? pace_.relaxedMicros(mean(), depth()) : 0, mean());
+      // everything is handed out (the generation ends with the last result), look often; but
+      // not before a result can be there
+      auto now = Clock::now();
+      arrivals_.foundNothing(now);
+      paceWait(backoff, next < order.size() ? pace_.relaxedMicros(mean(), depth()) : 0, mean(),
+               arrivals_.microsToEarliest(held, now));
       backoff.wait();
       continue;
     }
@@ -334,6 +347,8 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     ++span.evaluations;
     --outstanding;
     --held[static_cast<std::size_t>(message.source)];
+    arrivals_.resultCame(message.source, held[static_cast<std::size_t>(message.source)],
+                         result.outcome.wall_seconds);
     // testing aid: a kill in the middle of the generation (after rank 0's own work, as in
     // the point's definition)
     if (2 * span.evaluations >= order.size() && 2 * (span.evaluations - 1) < order.size()) {
@@ -375,6 +390,7 @@ void MpiScheduler::submit(const Individual& individual, std::uint64_t run_seed) 
   }
   mpi_.post(worker, Tag::request, encodeRequest(makeRequest(individual, run_seed, 0)));
   streamed_.insert(individual.id);
+  arrivals_.handed(worker, stream_held_[static_cast<std::size_t>(worker)], Clock::now());
   ++stream_held_[static_cast<std::size_t>(worker)];
 }
 
@@ -387,9 +403,12 @@ StreamedResult MpiScheduler::take() {
     if (mpi_.tryReceive(Tag::result, message))
       break;
     // every worker with one queued behind the one it evaluates: sleep a quarter of that work;
-    // else a worker may be waiting, so look often
+    // else a worker may be waiting, so look often; but not before a result can be there
+    auto now = Clock::now();
+    arrivals_.foundNothing(now);
     const int least = *std::min_element(stream_held_.begin() + 1, stream_held_.end());
-    paceWait(stream_backoff_, pace_.relaxedMicros(streamMean(), least), streamMean());
+    paceWait(stream_backoff_, pace_.relaxedMicros(streamMean(), least), streamMean(),
+             arrivals_.microsToEarliest(stream_held_, now));
     stream_backoff_.wait();
   }
   auto start = Clock::now();
@@ -400,6 +419,8 @@ StreamedResult MpiScheduler::take() {
                                    " answered for creature " + std::to_string(result.id) +
                                    " that was not asked for");
   --stream_held_[static_cast<std::size_t>(message.source)];
+  arrivals_.resultCame(message.source, stream_held_[static_cast<std::size_t>(message.source)],
+                       result.outcome.wall_seconds);
   stream_busy_seconds_ += result.outcome.wall_seconds;
   ++stream_taken_;
   return {result.id, std::move(result.outcome), message.source, since(start)};

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "evolution/population.hpp"
+#include "parallel/expected_arrivals.hpp"
 #include "parallel/worker.hpp"
 
 #include <cstddef>
@@ -205,6 +206,7 @@ class MpiScheduler : public PopulationEvaluator {
   MpiContext& mpi_;
   DispatchSettings dispatch_;
   DispatchPace pace_;
+  ExpectedArrivals arrivals_;     // when a result can next come in (generations and the stream)
   double last_mean_seconds_ = 0;  // the mean evaluation of the last generation (0: none yet)
   bool stopped_ = false;
   // the stream (steady state): ids out, creatures each worker holds, evaluations taken
