@@ -42,7 +42,7 @@ asan_ctest() {
   tracer_crashed "$log" || return 1
   echo "test.sh: LeakSanitizer's tracer crashed again; the tests still failing run once more" \
     "without the leak check (AddressSanitizer and UBSan still on)"
-  ASAN_OPTIONS="detect_leaks=0:fast_unwind_on_malloc=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1" \
+  ASAN_OPTIONS="detect_leaks=0:intercept_tls_get_addr=0:fast_unwind_on_malloc=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1" \
     UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
     ctest --test-dir build/asan --rerun-failed --output-on-failure -j "$(nproc)"
 }

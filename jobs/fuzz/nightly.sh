@@ -37,7 +37,7 @@ fuzz() {
       -artifact_prefix="$out/crashes/$target/" "$out/corpus/$target" \
       "$source_dir/tests/fuzz/corpus/$target" > "$out/$target.log" 2>&1 ) || true
 }
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:intercept_tls_get_addr=0} UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$source_dir/tests/sanitizers/lsan.supp}
 # the readers read in this process (no child first); libhdf5's own errors on damaged files
 export CAMBRIAN_READ_SECONDS=0
