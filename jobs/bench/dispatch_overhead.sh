@@ -59,26 +59,26 @@ for spend in $works; do
     # cambrian, generational and steady state: the generations' own times (startup and the
     # final tables left out, as for peers)
     for genome in $genomes; do
-    for mode in generational steady_state; do
-      system=cambrian
-      [ "$mode" = steady_state ] && system=cambrian_steady
-      extra=()
-      [ "$genome" = springy ] && system=${system}_springy extra=("${springy[@]}")
-      out="$work/$system-$spend-$cost"
-      mpirun -np $((workers + 1)) --oversubscribe "$cambrian" evolve \
-        --config jobs/experiments/synthetic.ini --task.synthetic_distribution fixed \
-        --task.synthetic_cost_us "$cost" --task.synthetic_work "$spend" \
-        --evolution.generations "$g" --evolution.mode "$mode" --quiet --out "$out" \
-        ${extra[@]+"${extra[@]}"} > "$out.txt"
-      read -r evals wall cpu busy <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
-        { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"]
-          b += $col["worker_busy_seconds"] }
-        END { printf "%d %.6f %.6f %.6f", e, w, c, b }' "$out/generations.tsv")"
-      printf "%-6s %-9s %-23s %11s %9.3f %13s %17s %13.1f\n" "$spend" "$cost" "$system" "$evals" \
-        "$wall" "$(overhead "$evals" "$wall" $workers "$cost")" \
-        "$(awk -v e="$evals" -v w="$wall" -v b="$busy" -v n=$workers 'BEGIN { printf "%.1f", (w * n - b) / e * 1e6 }')" \
-        "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
-    done
+      for mode in generational steady_state; do
+        system=cambrian
+        [ "$mode" = steady_state ] && system=cambrian_steady
+        extra=()
+        [ "$genome" = springy ] && system=${system}_springy extra=("${springy[@]}")
+        out="$work/$system-$spend-$cost"
+        mpirun -np $((workers + 1)) --oversubscribe "$cambrian" evolve \
+          --config jobs/experiments/synthetic.ini --task.synthetic_distribution fixed \
+          --task.synthetic_cost_us "$cost" --task.synthetic_work "$spend" \
+          --evolution.generations "$g" --evolution.mode "$mode" --quiet --out "$out" \
+          ${extra[@]+"${extra[@]}"} > "$out.txt"
+        read -r evals wall cpu busy <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+          { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"]
+            b += $col["worker_busy_seconds"] }
+          END { printf "%d %.6f %.6f %.6f", e, w, c, b }' "$out/generations.tsv")"
+        printf "%-6s %-9s %-23s %11s %9.3f %13s %17s %13.1f\n" "$spend" "$cost" "$system" "$evals" \
+          "$wall" "$(overhead "$evals" "$wall" $workers "$cost")" \
+          "$(awk -v e="$evals" -v w="$wall" -v b="$busy" -v n=$workers 'BEGIN { printf "%.1f", (w * n - b) / e * 1e6 }')" \
+          "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
+      done
     done
     for peer in "${peers[@]}"; do
       case $peer in

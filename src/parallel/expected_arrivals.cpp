@@ -1,7 +1,6 @@
 #include "parallel/expected_arrivals.hpp"
 
 #include <algorithm>
-#include <limits>
 
 namespace cambrian {
 
