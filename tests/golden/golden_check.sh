@@ -11,9 +11,9 @@
 #              self-collision, Chaumont's normalisation and rest rule, tournament / rank / sus
 #              selection, unconnected nodes collected, seed genomes, Sims' swimming in water and
 #              following a light, Chaumont et al.'s walk (hinges only, their neuron set), the
-#              springy Pyramids, Walking with Dinosaurs (its DNA, relaxation and breeding in the
-#              rigid-body world its files name; with dismemberment there; wwd_short_batches:
-#              short batches, and dismemberment in the Featherstone world)
+#              springy Pyramids, Walking with Dinosaurs (its DNA, relaxation and breeding; with
+#              dismemberment in the rigid-body world; wwd_short_batches: short batches, and
+#              dismemberment in the Featherstone world)
 #   simulate:  `cambrian simulate` on the hand-written creatures and random seeds (walk, jump,
 #              swim, follow_light, synthetic): status, fitness, every measure and the step count
 #   resume_v1: a run checkpointed by the cambrian of before the plug-in renovation
@@ -166,7 +166,7 @@ case $mode in
       --physics.joint_breaking 1.05 --task.wwd_condition box_loving "${common[@]}" --seed 21
     evolve wwd_short_batches --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" \
       --evolution.seed_genomes "$creatures/wwd/pole.genome" --evolution.batch_generations 2 \
-      --physics.world featherstone --physics.joint_breaking 1.05 "${common[@]}" --seed 22
+      --physics.joint_breaking 1.05 "${common[@]}" --seed 22
     ;;
   simulate)
     for creature in walker4 snake pole single_block; do
@@ -221,9 +221,6 @@ case $mode in
       simulate "simulate_wwd_${creature}" --genome "$creatures/wwd/$creature.genome" \
         --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" --task.evaluation_time 3
     done
-    simulate simulate_wwd_turtle_featherstone --genome "$creatures/wwd/turtle.genome" \
-      --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" --task.evaluation_time 3 \
-      --physics.world featherstone
     simulate simulate_wwd_random --random --seed 6 \
       --config "$source_dir/jobs/experiments/wwd/iterative-move.ini" --task.evaluation_time 3
     simulate simulate_wwd_jump --genome "$creatures/wwd/turtle.genome" \
