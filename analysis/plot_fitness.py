@@ -2,10 +2,15 @@
 """Plot fitness over generations from a cambrian history file: best, mean, median and the
 interquartile band (q25..q75), written to a PNG (headless, matplotlib's Agg backend). Given
 several histories (runs of one experiment at several seeds, say), it draws each run's best
-(solid) and median (dashed) in one colour per run, labelled by seed, to show the spread.
+(solid) and median (dashed) in one colour per run, labelled by seed, to show the spread. With
+--sequence the runs are steps of one sequence (each started from the best of the one before,
+evolution.seed_history, perhaps under another test): one panel each, left to right, with its own
+fitness axis and the generations counted on from the step before.
 
     python3 analysis/plot_fitness.py run/history.h5 --output fitness.png
     python3 analysis/plot_fitness.py seed1/history.h5 seed2/history.h5 --output seeds.png
+    python3 analysis/plot_fitness.py t1/history.h5 t2/history.h5 --sequence --label "step 1" \
+        --label "step 2" --output chain.png
 """
 
 import argparse
@@ -35,7 +40,21 @@ def parse_arguments(argv):
         "--log", action="store_true", help="logarithmic fitness axis (runs that differ by orders of magnitude)"
     )
     parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNG (default: 120)")
-    return parser.parse_args(argv)
+    parser.add_argument(
+        "--sequence",
+        action="store_true",
+        help="the runs are steps of one sequence: a panel each, generations counted on",
+    )
+    parser.add_argument(
+        "--label",
+        action="append",
+        default=None,
+        help="a run's label, once per history in their order (default: seed or directory)",
+    )
+    arguments = parser.parse_args(argv)
+    if arguments.label is not None and len(arguments.label) != len(arguments.history):
+        parser.error(f"--label given {len(arguments.label)} times for {len(arguments.history)} histories")
+    return arguments
 
 
 def plot(generations, title, output, dpi=120):
@@ -78,6 +97,30 @@ def plot_runs(runs, title, output, dpi=120, log=False):
     plt.close(figure)
 
 
+def plot_sequence(runs, title, output, dpi=120):
+    """Draws the steps of a sequence left to right, a panel each with its own fitness axis (a step
+    may score another test) and its generations numbered on from the step before; `runs` is a
+    list of (label, generations table)."""
+    figure, panels = plt.subplots(1, len(runs), figsize=(max(8, 4 * len(runs)), 4.5), squeeze=False)
+    offset = 0
+    for axes, (label, generations) in zip(panels[0], runs):
+        g = [offset + x for x in generations["generation"]]
+        axes.fill_between(g, generations["q25"], generations["q75"], alpha=0.25, label="q25..q75")
+        axes.plot(g, generations["best"], label="best", linewidth=2)
+        axes.plot(g, generations["mean"], label="mean")
+        axes.plot(g, generations["median"], label="median", linestyle="--")
+        axes.set_title(label, fontsize=10)
+        axes.set_xlabel("generation")
+        axes.grid(alpha=0.3)
+        offset = g[-1] + 1
+    panels[0][0].set_ylabel("fitness")
+    panels[0][0].legend(loc="best", fontsize=8)
+    figure.suptitle(title)
+    figure.tight_layout()
+    figure.savefig(output, dpi=dpi)
+    plt.close(figure)
+
+
 def run_label(path, seed, seeds):
     """A run's label: its seed, or its directory where two runs share a seed."""
     if seed is not None and seeds.count(seed) == 1:
@@ -101,13 +144,17 @@ def main(argv=None):
             return 4
         tables.append(generations)
         seeds.append(None if seed is None else int(seed))
-    if len(tables) == 1:
+    labels = arguments.label or [run_label(path, seed, seeds) for path, seed in zip(arguments.history, seeds)]
+    if arguments.sequence:
+        title = arguments.title or f"a sequence of {len(tables)} runs"
+        plot_sequence(list(zip(labels, tables)), title, arguments.output, arguments.dpi)
+    elif len(tables) == 1:
         title = arguments.title or f"{arguments.history[0]} (seed {seeds[0]})"
         plot(tables[0], title, arguments.output, arguments.dpi)
         if arguments.log:
             print("plot_fitness: --log applies to several runs only", file=sys.stderr)
     else:
-        runs = [(run_label(path, seed, seeds), table) for path, seed, table in zip(arguments.history, seeds, tables)]
+        runs = list(zip(labels, tables))
         title = arguments.title or f"{len(runs)} runs"
         plot_runs(runs, title, arguments.output, arguments.dpi, arguments.log)
     print(f"wrote {arguments.output}")

@@ -210,6 +210,40 @@ def test_plot_of_several_runs(history_path, tmp_path):
     assert not (tmp_path / "y.png").exists()
 
 
+def test_plot_of_a_sequence(history_path, tmp_path):
+    output = tmp_path / "sequence.png"
+    result = run_plot(
+        history_path, history_path, "--sequence", "--label", "step 1", "--label", "step 2", "--output", str(output)
+    )
+    assert result.returncode == 0, result.stderr
+    assert output.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # a label for each history or none: a clear usage error, nothing written
+    result = run_plot(history_path, history_path, "--sequence", "--label", "one", "--output", str(tmp_path / "z.png"))
+    assert result.returncode == 2 and "--label given 1 times for 2 histories" in result.stderr
+    assert not (tmp_path / "z.png").exists()
+
+
+def test_a_sequence_numbers_each_step_on_from_the_one_before(tmp_path):
+    sys.path.insert(0, os.path.dirname(HERE))
+    import plot_fitness
+
+    step = {"generation": [0, 1, 2], "best": [1, 2, 3], "mean": [1, 1, 1], "median": [1, 1, 1]}
+    step.update(q25=[0, 0, 0], q75=[2, 2, 2])
+    drawn = []
+    original = plot_fitness.plt.Axes.plot
+
+    def record(axes, x, *rest, **options):
+        drawn.append(list(x))
+        return original(axes, x, *rest, **options)
+
+    plot_fitness.plt.Axes.plot = record
+    try:
+        plot_fitness.plot_sequence([("a", step), ("b", step)], "t", str(tmp_path / "s.png"))
+    finally:
+        plot_fitness.plt.Axes.plot = original
+    assert drawn[0] == [0, 1, 2] and drawn[-1] == [3, 4, 5]
+
+
 def test_run_labels_are_seeds_unless_shared():
     sys.path.insert(0, os.path.dirname(HERE))
     import plot_fitness
