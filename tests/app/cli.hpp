@@ -50,4 +50,10 @@ inline std::string lineStartingWith(const std::string& output, const std::string
   return output.substr(at, output.find('\n', at) - at);
 }
 
+/// The number after `key` on its line of `output` (a `simulate` summary), or -1 without one.
+inline double valueAfter(const std::string& output, const std::string& key) {
+  const std::string line = lineStartingWith(output, key);
+  return line.empty() ? -1.0 : std::stod(line.substr(key.size()));
+}
+
 }  // namespace cambrian::test

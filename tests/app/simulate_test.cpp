@@ -314,10 +314,7 @@ TEST(SimulateCommand, TheClampRiderNoLongerRides) {
                             "/tests/physics/data/clamp_rider.genome --config " +
                             std::string(CAMBRIAN_SOURCE_DIR) + "/jobs/experiments/sims.ini";
   const std::string unwatched = rider + " --physics.max_joint_speed 0";
-  auto fitness = [](const std::string& output) {
-    const std::string line = lineStartingWith(output, "fitness");
-    return line.empty() ? -1.0 : std::stod(line.substr(std::string("fitness").size()));
-  };
+  auto fitness = [](const std::string& output) { return test::valueAfter(output, "fitness"); };
   auto now = runCambrian(unwatched);
   ASSERT_EQ(now.exit_code, 0) << now.output;
   EXPECT_EQ(lineStartingWith(now.output, "status"), "status     ok") << now.output;
@@ -347,10 +344,7 @@ TEST(SimulateCommand, TheSlidingPlateDoesNotSlideAsTheWwdFilesShip) {
                             "/tests/physics/data/sliding_plate.genome --config " +
                             std::string(CAMBRIAN_SOURCE_DIR) +
                             "/jobs/experiments/wwd/iterative-move.ini";
-  auto distance = [](const std::string& output) {
-    const std::string line = lineStartingWith(output, "distance");
-    return line.empty() ? -1.0 : std::stod(line.substr(std::string("distance").size()));
-  };
+  auto distance = [](const std::string& output) { return test::valueAfter(output, "distance"); };
   auto shipped = runCambrian(plate);
   ASSERT_EQ(shipped.exit_code, 0) << shipped.output;
   EXPECT_EQ(lineStartingWith(shipped.output, "status"), "status     ok") << shipped.output;
