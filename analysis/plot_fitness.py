@@ -57,14 +57,18 @@ def parse_arguments(argv):
     return arguments
 
 
-def plot(generations, title, output, dpi=120):
-    """Draws the fitness curves of a generations table (dict of arrays) into `output`."""
-    g = generations["generation"]
-    figure, axes = plt.subplots(figsize=(8, 4.5))
+def draw_curves(axes, g, generations):
+    """The q25..q75 band and the best, mean and median lines of a generations table at x = g."""
     axes.fill_between(g, generations["q25"], generations["q75"], alpha=0.25, label="q25..q75")
     axes.plot(g, generations["best"], label="best", linewidth=2)
     axes.plot(g, generations["mean"], label="mean")
     axes.plot(g, generations["median"], label="median", linestyle="--")
+
+
+def plot(generations, title, output, dpi=120):
+    """Draws the fitness curves of a generations table (dict of arrays) into `output`."""
+    figure, axes = plt.subplots(figsize=(8, 4.5))
+    draw_curves(axes, generations["generation"], generations)
     axes.set_xlabel("generation")
     axes.set_ylabel("fitness")
     axes.set_title(title)
@@ -105,10 +109,7 @@ def plot_sequence(runs, title, output, dpi=120):
     offset = 0
     for axes, (label, generations) in zip(panels[0], runs):
         g = [offset + x for x in generations["generation"]]
-        axes.fill_between(g, generations["q25"], generations["q75"], alpha=0.25, label="q25..q75")
-        axes.plot(g, generations["best"], label="best", linewidth=2)
-        axes.plot(g, generations["mean"], label="mean")
-        axes.plot(g, generations["median"], label="median", linestyle="--")
+        draw_curves(axes, g, generations)
         axes.set_title(label, fontsize=10)
         axes.set_xlabel("generation")
         axes.grid(alpha=0.3)
