@@ -359,7 +359,10 @@ case $mode in
   worker_failure)
     job fail "$np" --config "$work/run.ini" --out "$work/fail" --run.fail_every 5
     expect_rc fail 0
-    expect_text "$work/fail.err" "creature 5 failed: injected failure"
+    # a failure named by its creature (which one comes first, and whether the ranks' stderr
+    # lines reach mpirun whole, depends on the scheduling: any id divisible by 5 will do)
+    grep -Eq "creature [0-9]*[05] failed: injected failure" "$work/fail.err" ||
+      fail "$work/fail.err names no failed creature; it has: $(head -n 3 "$work/fail.err")"
     grep -q "rank [1-9][0-9]*: creature" "$work/fail.err" ||
       fail "no 'rank R: creature' line naming a worker rank in $work/fail.err"
     # every evaluated creature with an id divisible by 5 failed, with fitness 0
