@@ -359,8 +359,8 @@ case $mode in
   worker_failure)
     job fail "$np" --config "$work/run.ini" --out "$work/fail" --run.fail_every 5
     expect_rc fail 0
-    # a failure named by its creature (which one comes first, and whether the ranks' stderr
-    # lines reach mpirun whole, depends on the scheduling: any id divisible by 5 will do)
+    # a failure named by its creature: any id divisible by 5 (a fresh-clone suite under load once
+    # had no line for creature 5 in fail.err; why is not known)
     grep -Eq "creature [0-9]*[05] failed: injected failure" "$work/fail.err" ||
       fail "$work/fail.err names no failed creature; it has: $(head -n 3 "$work/fail.err")"
     grep -q "rank [1-9][0-9]*: creature" "$work/fail.err" ||
