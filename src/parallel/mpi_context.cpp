@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <iostream>
 #include <list>
@@ -105,6 +106,10 @@ MpiContext::MpiContext(int* argc, char*** argv)
   int initialised = 0;
   MPI_Initialized(&initialised);
   if (!initialised) {
+    // waits here are probes and sleeps, never inside MPI: Open MPI's yield when idle (which it
+    // turns on where ranks outnumber cores) would only hand the core to a spinning worker for a
+    // whole time slice at each empty probe; a value set with --mca or in the environment stays
+    setenv("OMPI_MCA_mpi_yield_when_idle", "0", 0);
     if (MPI_Init(argc, argv) != MPI_SUCCESS)
       throw Error(ExitCode::mpi, "MPI_Init failed");
     owns_ = true;
@@ -147,6 +152,39 @@ MpiContext::~MpiContext() {
   MPI_Finalized(&finalised);
   if (owns_ && !finalised)
     MPI_Finalize();
+}
+
+int MpiContext::yieldWhenIdle() const {
+  // the control variable, through the tool interface (readable after MPI_Init)
+  int provided = 0;
+  if (MPI_T_init_thread(MPI_THREAD_SINGLE, &provided) != MPI_SUCCESS)
+    return -1;
+  int value = -1, count = 0;
+  MPI_T_cvar_get_num(&count);
+  for (int index = 0; index < count && value < 0; ++index) {
+    char name[256], about[1024];
+    int name_length = sizeof name, about_length = sizeof about, verbosity = 0, bind = 0, scope = 0;
+    MPI_Datatype type;
+    MPI_T_enum enumeration;
+    if (MPI_T_cvar_get_info(index, name, &name_length, &verbosity, &type, &enumeration, about,
+                            &about_length, &bind, &scope) != MPI_SUCCESS ||
+        std::strcmp(name, "mpi_yield_when_idle") != 0 ||
+        (type != MPI_C_BOOL && type != MPI_INT))
+      continue;
+    MPI_T_cvar_handle handle;
+    int elements = 0;
+    if (MPI_T_cvar_handle_alloc(index, nullptr, &handle, &elements) == MPI_SUCCESS) {
+      // a bool (Open MPI) or an int, read into room for either
+      int read = 0;
+      bool flag = false;
+      if (MPI_T_cvar_read(handle, type == MPI_C_BOOL ? static_cast<void*>(&flag) : &read) ==
+          MPI_SUCCESS)
+        value = (flag || read != 0) ? 1 : 0;
+      MPI_T_cvar_handle_free(&handle);
+    }
+  }
+  MPI_T_finalize();
+  return value;
 }
 
 void MpiContext::send(int destination, Tag tag, const std::vector<std::uint8_t>& bytes) {

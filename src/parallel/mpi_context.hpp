@@ -32,7 +32,8 @@ struct Message {
 /// Initialises MPI for the life of the object (MPI_Init / MPI_Finalize) and wraps the few calls
 /// evolve needs. Waiting never busy-polls: it probes without blocking and sleeps adaptively
 /// (50 us growing to 1 ms), so rank 0 can share a core with a worker. On Linux the process'
-/// timer slack is set to 1 us, so that those sleeps end when they are due.
+/// timer slack is set to 1 us, so that those sleeps end when they are due. Open MPI's
+/// mpi_yield_when_idle is off unless the user sets it (yieldWhenIdle).
 class MpiContext {
  public:
   /// Calls MPI_Init unless MPI is already initialised.
@@ -47,6 +48,12 @@ class MpiContext {
   int rank() const { return rank_; }
   /// Number of ranks in this context's communicator.
   int size() const { return size_; }
+  /// Open MPI's mpi_yield_when_idle as this process runs with it (1: each probe that finds
+  /// nothing yields the core), -1 where the MPI has no such setting. Off unless set with
+  /// `mpiexec --mca` or OMPI_MCA_mpi_yield_when_idle: Open MPI would turn it on where ranks
+  /// outnumber cores, and then rank 0 lost a whole time slice to a spinning worker at each
+  /// empty probe while the workers' queues ran dry.
+  int yieldWhenIdle() const;
   /// The ranks of this context that give the same `color` (>= 0), ordered as here, as a context
   /// of their own; null for a negative color (the rank joins none). Collective: every rank of
   /// this context calls it. Messages in one context never match receives in another.
