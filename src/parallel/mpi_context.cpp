@@ -9,8 +9,10 @@
 #include <ctime>
 #include <iostream>
 #include <list>
+#include <thread>
 
 #ifdef __linux__
+#include <sched.h>
 #include <sys/prctl.h>
 #endif
 
@@ -100,16 +102,31 @@ struct MpiContext::PostedSends {
   std::list<Send> sends;
 };
 
+bool keepCoreWhenIdle(int local_ranks, int cores) {
+  return local_ranks > 0 && cores > 0 && local_ranks <= cores + 1;
+}
+
+int usableCores() {
+#ifdef __linux__
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0)
+    return CPU_COUNT(&set);
+#endif
+  return static_cast<int>(std::thread::hardware_concurrency());
+}
+
 MpiContext::MpiContext(int* argc, char*** argv)
     : communicator_(std::make_unique<Communicator>()), posted_(std::make_unique<PostedSends>()) {
   // initialise unless someone already did
   int initialised = 0;
   MPI_Initialized(&initialised);
   if (!initialised) {
-    // waits here are probes and sleeps, never inside MPI: Open MPI's yield when idle (which it
-    // turns on where ranks outnumber cores) would only hand the core to a spinning worker for a
-    // whole time slice at each empty probe; a value set with --mca or in the environment stays
-    setenv("OMPI_MCA_mpi_yield_when_idle", "0", 0);
+    // Open MPI's yield when idle off where every worker has a core (keepCoreWhenIdle); a value
+    // set with --mca or in the environment stays
+    if (const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+        local && keepCoreWhenIdle(std::atoi(local), usableCores()))
+      setenv("OMPI_MCA_mpi_yield_when_idle", "0", 0);
     if (MPI_Init(argc, argv) != MPI_SUCCESS)
       throw Error(ExitCode::mpi, "MPI_Init failed");
     owns_ = true;

@@ -29,11 +29,26 @@ struct Message {
   std::vector<std::uint8_t> bytes;
 };
 
+/// Whether Open MPI's mpi_yield_when_idle is turned off for a job with `local_ranks` ranks on a
+/// node where this process may use `cores` cores: where every worker has a core of its own and
+/// rank 0, which mostly sleeps, at most shares one (local_ranks <= cores + 1). Open MPI turns it
+/// on there (the ranks outnumber the cores by rank 0), and then each probe of rank 0 that found
+/// nothing handed its core to a computing worker for a whole time slice: rank 0 fell
+/// milliseconds behind and the workers' queues ran dry. With many more ranks than cores
+/// (sleeping synthetic workers) yielding lets the rank with a message run sooner, so Open MPI's
+/// own choice stays.
+bool keepCoreWhenIdle(int local_ranks, int cores);
+
+/// Cores this process may run on: its CPU affinity (the job's share of the node where the
+/// launcher did not bind it to one), else the machine's.
+int usableCores();
+
 /// Initialises MPI for the life of the object (MPI_Init / MPI_Finalize) and wraps the few calls
 /// evolve needs. Waiting never busy-polls: it probes without blocking and sleeps adaptively
 /// (50 us growing to 1 ms), so rank 0 can share a core with a worker. On Linux the process'
 /// timer slack is set to 1 us, so that those sleeps end when they are due. Open MPI's
-/// mpi_yield_when_idle is off unless the user sets it (yieldWhenIdle).
+/// mpi_yield_when_idle is off where every worker has a core (keepCoreWhenIdle) unless the user
+/// sets it.
 class MpiContext {
  public:
   /// Calls MPI_Init unless MPI is already initialised.
@@ -49,10 +64,7 @@ class MpiContext {
   /// Number of ranks in this context's communicator.
   int size() const { return size_; }
   /// Open MPI's mpi_yield_when_idle as this process runs with it (1: each probe that finds
-  /// nothing yields the core), -1 where the MPI has no such setting. Off unless set with
-  /// `mpiexec --mca` or OMPI_MCA_mpi_yield_when_idle: Open MPI would turn it on where ranks
-  /// outnumber cores, and then rank 0 lost a whole time slice to a spinning worker at each
-  /// empty probe while the workers' queues ran dry.
+  /// nothing yields the core), -1 where the MPI has no such setting.
   int yieldWhenIdle() const;
   /// The ranks of this context that give the same `color` (>= 0), ordered as here, as a context
   /// of their own; null for a negative color (the rank joins none). Collective: every rank of

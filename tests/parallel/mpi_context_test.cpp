@@ -1,7 +1,7 @@
 // Tests of the MPI facade that need a running job, at every rank count CTest gives it
 // (mpi_context_np_N): split contexts (the islands' communicators) hold the ranks of one color in
 // order, keep their messages to themselves and reduce over their own ranks only; Open MPI does
-// not yield the core at each empty probe, also where the ranks outnumber the cores.
+// not yield the core at each empty probe where every worker has a core of its own.
 #include "parallel/mpi_context.hpp"
 
 #include <gtest/gtest.h>
@@ -53,14 +53,37 @@ TEST(MpiContext, MessagesAndReductionsStayInTheirContext) {
   EXPECT_EQ(world->allReduceMax(world->rank()), world->size() - 1);
 }
 
-TEST(MpiContext, OpenMpiDoesNotYieldTheCoreAtEmptyProbes) {
-  // the tests run oversubscribed (more ranks than cores), where Open MPI's default is to yield;
-  // a value given in the environment (mpiexec --mca) is the user's and stays
+TEST(MpiContext, TheCoreIsKeptWhereEveryWorkerHasOne) {
+  // rank 0 and a worker per core, or fewer: kept
+  EXPECT_TRUE(keepCoreWhenIdle(1, 1));
+  EXPECT_TRUE(keepCoreWhenIdle(2, 2));
+  EXPECT_TRUE(keepCoreWhenIdle(3, 2));
+  EXPECT_TRUE(keepCoreWhenIdle(17, 16));
+  // more workers than cores, or nothing known: Open MPI's choice
+  EXPECT_FALSE(keepCoreWhenIdle(4, 2));
+  EXPECT_FALSE(keepCoreWhenIdle(129, 2));
+  EXPECT_FALSE(keepCoreWhenIdle(0, 2));
+  EXPECT_FALSE(keepCoreWhenIdle(3, 0));
+  EXPECT_GE(usableCores(), 1);
+}
+
+TEST(MpiContext, OpenMpiKeepsTheCoreWhereEveryWorkerHasOne) {
+  // the tests run at 1 to 4 ranks with --oversubscribe, where Open MPI's default is to yield
+  // once the ranks outnumber the cores
   const int value = world->yieldWhenIdle();
   if (value < 0)
     GTEST_SKIP() << "this MPI has no mpi_yield_when_idle";
+  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  if (local == nullptr)
+    GTEST_SKIP() << "not started by Open MPI's mpiexec";
   const char* given = std::getenv("OMPI_MCA_mpi_yield_when_idle");
-  ASSERT_NE(given, nullptr);  // set before MPI_Init where nobody had
+  if (given == nullptr) {
+    // left to Open MPI only where the ranks outnumber the cores by more than rank 0
+    EXPECT_FALSE(keepCoreWhenIdle(std::atoi(local), usableCores()))
+        << local << " ranks on " << usableCores() << " cores";
+    return;
+  }
+  // ours ("0") or the user's (mpiexec --mca), as Open MPI reads it
   const std::string text = given;
   const bool yes = text == "1" || text == "true" || text == "yes" || text == "enabled" ||
                    text == "t" || text == "y";
