@@ -4,15 +4,16 @@
 # 1 ms, 10 ms), 2 workers, the cost spent spinning or asleep. Overhead per evaluation = wall x
 # workers / evaluations - cost (the whole loop: breeding, dispatch, history); for cambrian also
 # beyond the evaluations' own measured time (wall x workers - their busy time, per evaluation:
-# what a sleep's wake-up latency does not count in). Peers, where their Debian packages are
-# installed: DEAP with multiprocessing.Pool and with mpi4py.futures (python3-deap,
-# python3-mpi4py), pagmo2's thread batch evaluator (libpagmo-dev). Figures and their reading:
+# what a sleep's wake-up latency does not count in) and over the middle generations alone
+# ("mid-run": the first and the last carry the run's one-off file costs). Peers, where their
+# Debian packages are installed: DEAP with multiprocessing.Pool and with mpi4py.futures
+# (python3-deap, python3-mpi4py), pagmo2's thread batch evaluator (libpagmo-dev). Figures and their reading:
 # docs/performance.md. cambrian's creatures are directed-graph genomes of about 5 KB (rows
 # `cambrian`, `cambrian_steady`) and springy Snakes, 6 muscles of 4 numbers each, as small as the
 # peers' 20 floats (rows `cambrian_springy`, `cambrian_steady_springy`).
 # usage: [GENOMES="graph springy"] jobs/bench/dispatch_overhead.sh [path/to/cambrian]
 #          [spin|sleep|both] [quick]
-#   quick: two generations per cost (a smoke test; the figures mean little)
+#   quick: three generations per cost (a smoke test; the figures mean little)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cambrian=$(realpath "${1:-build/release/src/app/cambrian}")
@@ -32,7 +33,7 @@ springy=(--genome.encoding springy --springy.organism jobs/creatures/springy/sna
 
 # generations per cost: a few seconds of work each
 generations() {
-  [ "$quick" = quick ] && { echo 2; return; }
+  [ "$quick" = quick ] && { echo 3; return; }
   case $1 in 100) echo 60 ;; 1000) echo 20 ;; *) echo 10 ;; esac
 }
 
@@ -51,8 +52,8 @@ if [ -f /usr/include/pagmo/batch_evaluators/thread_bfe.hpp ] &&
   peers+=(pagmo_thread_bfe)
 fi
 
-printf "%-6s %-9s %-23s %11s %9s %13s %17s %13s\n" work "cost (us)" system evaluations "wall (s)" \
-  "overhead (us)" "beyond eval (us)" "rank 0 CPU %"
+printf "%-6s %-9s %-23s %11s %9s %13s %17s %13s %14s\n" work "cost (us)" system evaluations \
+  "wall (s)" "overhead (us)" "beyond eval (us)" "rank 0 CPU %" "mid-run (us)"
 for spend in $works; do
   for cost in 100 1000 10000; do
     g=$(generations "$cost")
@@ -70,14 +71,21 @@ for spend in $works; do
           --task.synthetic_cost_us "$cost" --task.synthetic_work "$spend" \
           --evolution.generations "$g" --evolution.mode "$mode" --quiet --out "$out" \
           ${extra[@]+"${extra[@]}"} > "$out.txt"
-        read -r evals wall cpu busy <<< "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+        # all generations, and the middle ones alone (the first and the last carry the run's
+        # one-off costs: creating the files, the final history rows and checkpoint)
+        read -r evals wall cpu busy mid_evals mid_wall <<< "$(awk -F'\t' -v last=$((g - 1)) '
+          NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
           { e += $col["evaluations"]; w += $col["wall_seconds"]; c += $col["rank0_cpu_seconds"]
-            b += $col["worker_busy_seconds"] }
-          END { printf "%d %.6f %.6f %.6f", e, w, c, b }' "$out/generations.tsv")"
-        printf "%-6s %-9s %-23s %11s %9.3f %13s %17s %13.1f\n" "$spend" "$cost" "$system" "$evals" \
-          "$wall" "$(overhead "$evals" "$wall" $workers "$cost")" \
+            b += $col["worker_busy_seconds"]
+            if ($col["generation"] > 0 && $col["generation"] < last) {
+              me += $col["evaluations"]; mw += $col["wall_seconds"] } }
+          END { printf "%d %.6f %.6f %.6f %d %.6f", e, w, c, b, me, mw }' "$out/generations.tsv")"
+        middle=-
+        [ "$mid_evals" -gt 0 ] && middle=$(overhead "$mid_evals" "$mid_wall" $workers "$cost")
+        printf "%-6s %-9s %-23s %11s %9.3f %13s %17s %13.1f %14s\n" "$spend" "$cost" "$system" \
+          "$evals" "$wall" "$(overhead "$evals" "$wall" $workers "$cost")" \
           "$(awk -v e="$evals" -v w="$wall" -v b="$busy" -v n=$workers 'BEGIN { printf "%.1f", (w * n - b) / e * 1e6 }')" \
-          "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')"
+          "$(awk -v c="$cpu" -v w="$wall" 'BEGIN { print 100 * c / w }')" "$middle"
       done
     done
     for peer in "${peers[@]}"; do
@@ -90,8 +98,8 @@ for spend in $works; do
         pagmo_thread_bfe) line=$("$work/pagmo_overhead" "$cost" "$spend" 300 "$g") ;;
       esac
       read -r _ evals _ wall _ threads <<< "$line"
-      printf "%-6s %-9s %-23s %11s %9.3f %13s %17s %13s\n" "$spend" "$cost" "$peer" "$evals" "$wall" \
-        "$(overhead "$evals" "$wall" "$threads" "$cost")" "-" "-"
+      printf "%-6s %-9s %-23s %11s %9.3f %13s %17s %13s %14s\n" "$spend" "$cost" "$peer" "$evals" \
+        "$wall" "$(overhead "$evals" "$wall" "$threads" "$cost")" "-" "-" "-"
     done
   done
 done

@@ -185,8 +185,7 @@ int MpiContext::yieldWhenIdle() const {
     MPI_T_enum enumeration;
     if (MPI_T_cvar_get_info(index, name, &name_length, &verbosity, &type, &enumeration, about,
                             &about_length, &bind, &scope) != MPI_SUCCESS ||
-        std::strcmp(name, "mpi_yield_when_idle") != 0 ||
-        (type != MPI_C_BOOL && type != MPI_INT))
+        std::strcmp(name, "mpi_yield_when_idle") != 0 || (type != MPI_C_BOOL && type != MPI_INT))
       continue;
     MPI_T_cvar_handle handle;
     int elements = 0;
