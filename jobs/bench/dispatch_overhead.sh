@@ -7,10 +7,10 @@
 # what a sleep's wake-up latency does not count in) and over the middle generations alone
 # ("mid-run": the first and the last carry the run's one-off file costs). Peers, where their
 # Debian packages are installed: DEAP with multiprocessing.Pool and with mpi4py.futures
-# (python3-deap, python3-mpi4py), pagmo2's thread batch evaluator (libpagmo-dev). Figures and their reading:
-# docs/performance.md. cambrian's creatures are directed-graph genomes of about 5 KB (rows
-# `cambrian`, `cambrian_steady`) and springy Snakes, 6 muscles of 4 numbers each, as small as the
-# peers' 20 floats (rows `cambrian_springy`, `cambrian_steady_springy`).
+# (python3-deap, python3-mpi4py), pagmo2's thread batch evaluator (libpagmo-dev). Figures and
+# their reading: docs/performance.md. cambrian's creatures are directed-graph genomes of about
+# 5 KB (rows `cambrian`, `cambrian_steady`) and springy Snakes, 6 muscles of 4 numbers each, as
+# small as the peers' 20 floats (rows `cambrian_springy`, `cambrian_steady_springy`).
 # usage: [GENOMES="graph springy"] jobs/bench/dispatch_overhead.sh [path/to/cambrian]
 #          [spin|sleep|both] [quick]
 #   quick: three generations per cost (a smoke test; the figures mean little)

@@ -20,7 +20,8 @@ for cost in 100 1000 10000; do
     grep -Eq "^sleep +$cost +cambrian$genome +780 +[0-9.]+ +$number +$number +[0-9.]+ +$number$" \
       <<< "$table" || fail "no sound cambrian$genome row at $cost us"
     # the steady state: three generations of 300 results
-    grep -Eq "^sleep +$cost +cambrian_steady$genome +900 +[0-9.]+ +$number +$number +[0-9.]+ +$number$" \
+    grep -Eq \
+      "^sleep +$cost +cambrian_steady$genome +900 +[0-9.]+ +$number +$number +[0-9.]+ +$number$" \
       <<< "$table" || fail "no sound cambrian_steady$genome row at $cost us"
   done
 done
