@@ -26,10 +26,18 @@ class Rng {
   Rng(std::uint64_t seed, RngPurpose purpose, std::uint64_t generation = 0,
       std::uint64_t individual = 0);
 
-  /// Next raw 64-bit value.
-  std::uint64_t nextU64();
+  /// Next raw 64-bit value (one Philox block yields four; inline: breeding draws thousands).
+  std::uint64_t nextU64() {
+    const std::uint64_t slot = draw_ % 4;
+    if (slot == 0) {
+      block_ = draw_ / 4;
+      refill();
+    }
+    ++draw_;
+    return buffer_[slot];
+  }
   /// Uniform in [0, 1) with 53 random bits.
-  double uniform();
+  double uniform() { return static_cast<double>(nextU64() >> 11) * 0x1.0p-53; }
   /// Uniform in [lo, hi).
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
   /// Uniform integer in [0, n); n must be > 0. Unbiased (rejection).

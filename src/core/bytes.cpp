@@ -7,18 +7,6 @@
 
 namespace cambrian {
 
-void ByteWriter::unsignedLe(std::uint64_t v, int bytes) {
-  // little-endian whatever the host, appended at once (one capacity check, not one per byte)
-  std::uint8_t word[8];
-  for (int i = 0; i < bytes; ++i)
-    word[i] = static_cast<std::uint8_t>(v >> (8 * i));
-  out_.insert(out_.end(), word, word + bytes);
-}
-
-void ByteWriter::f64(double v) {
-  u64(std::bit_cast<std::uint64_t>(v));
-}
-
 void ByteWriter::vec3(const Vec3& v) {
   f64(v.x);
   f64(v.y);

@@ -5,6 +5,7 @@
 
 #include "cambrian/math.hpp"
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -18,12 +19,12 @@ class ByteWriter {
   /// Appends to `out` (kept by reference).
   explicit ByteWriter(std::vector<std::uint8_t>& out) : out_(out) {}
   void u8(std::uint8_t v) { out_.push_back(v); }
-  void u16(std::uint16_t v) { unsignedLe(v, 2); }
-  void u32(std::uint32_t v) { unsignedLe(v, 4); }
-  void u64(std::uint64_t v) { unsignedLe(v, 8); }
+  void u16(std::uint16_t v) { unsignedLe<2>(v); }
+  void u32(std::uint32_t v) { unsignedLe<4>(v); }
+  void u64(std::uint64_t v) { unsignedLe<8>(v); }
   void i64(std::int64_t v) { u64(static_cast<std::uint64_t>(v)); }
   /// A double as its IEEE 754 bits.
-  void f64(double v);
+  void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
   void vec3(const Vec3& v);
   /// Raw bytes, no length.
   void raw(const void* data, std::size_t size);
@@ -33,7 +34,13 @@ class ByteWriter {
   void text(const std::string& s) { blob(s.data(), s.size()); }
 
  private:
-  void unsignedLe(std::uint64_t v, int bytes);
+  // little-endian whatever the host, a byte at a time: inline, each append a compare and a store
+  // (a range insert is a call and a copy: a genome is thousands of these)
+  template <int Bytes>
+  void unsignedLe(std::uint64_t v) {
+    for (int i = 0; i < Bytes; ++i)
+      out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
   std::vector<std::uint8_t>& out_;
 };
 

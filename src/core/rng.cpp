@@ -21,21 +21,6 @@ void Rng::refill() {
     buffer_[i] = out.v[i];
 }
 
-std::uint64_t Rng::nextU64() {
-  // one Philox block yields four draws
-  std::uint64_t slot = draw_ % 4;
-  if (slot == 0) {
-    block_ = draw_ / 4;
-    refill();
-  }
-  ++draw_;
-  return buffer_[slot];
-}
-
-double Rng::uniform() {
-  return static_cast<double>(nextU64() >> 11) * 0x1.0p-53;
-}
-
 std::uint64_t Rng::below(std::uint64_t n) {
   // rejection sampling removes modulo bias
   std::uint64_t limit = UINT64_MAX - UINT64_MAX % n;

@@ -10,11 +10,17 @@
 namespace cambrian {
 
 std::vector<std::uint8_t> encodeRequest(const EvalRequest& request) {
+  return encodeRequest(request.id, request.eval_seed, request.genome);
+}
+
+std::vector<std::uint8_t> encodeRequest(std::uint64_t id, std::uint64_t eval_seed,
+                                        const std::vector<std::uint8_t>& genome) {
   std::vector<std::uint8_t> bytes;
+  bytes.reserve(3 * sizeof(std::uint64_t) + genome.size());
   ByteWriter w(bytes);
-  w.u64(request.id);
-  w.u64(request.eval_seed);
-  w.blob(request.genome.data(), request.genome.size());
+  w.u64(id);
+  w.u64(eval_seed);
+  w.blob(genome.data(), genome.size());
   return bytes;
 }
 

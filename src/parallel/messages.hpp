@@ -24,6 +24,9 @@ struct EvalResult {
 
 /// Little-endian encoding of a request.
 std::vector<std::uint8_t> encodeRequest(const EvalRequest& request);
+/// The same bytes from the fields (rank 0's: the genome's byte form is not copied first).
+std::vector<std::uint8_t> encodeRequest(std::uint64_t id, std::uint64_t eval_seed,
+                                        const std::vector<std::uint8_t>& genome);
 /// Inverse of encodeRequest; throws InputError naming the field on truncated bytes.
 EvalRequest decodeRequest(const std::vector<std::uint8_t>& bytes);
 /// Little-endian encoding of a result (every Outcome field, bit-exact doubles).

@@ -37,18 +37,32 @@ double since(Clock::time_point start) {
 // its time at 100 us creatures
 constexpr std::size_t kDecodedKeptUpTo = 2000;
 
-// the request for individual `individual` of a population of `population_size`; in a large one
-// rank 0 keeps its genome in the byte form alone from now on (decoded again only where it is
-// bred from): 100,000 graph genomes hold about 0.8 GB less
+// in a population of more than kDecodedKeptUpTo, rank 0 keeps a genome it has sent in the byte
+// form alone from now on (decoded again only where it is bred from): 100,000 graph genomes hold
+// about 0.8 GB less
+void keepSentBytesOnly(const Individual& individual, std::size_t population_size) {
+  if (population_size > kDecodedKeptUpTo)
+    individual.genome.dropDecoded();
+}
+
+// the request for individual `individual` of a population of `population_size`
 EvalRequest makeRequest(const Individual& individual, std::uint64_t run_seed,
                         std::size_t population_size) {
   EvalRequest request;
   request.id = individual.id;
   request.eval_seed = evaluationSeed(run_seed, individual.id);
   request.genome = individual.genomeBytes();
-  if (population_size > kDecodedKeptUpTo)
-    individual.genome.dropDecoded();
+  keepSentBytesOnly(individual, population_size);
   return request;
+}
+
+// the same request as its message bytes, the genome's byte form not copied on the way
+std::vector<std::uint8_t> requestMessage(const Individual& individual, std::uint64_t run_seed,
+                                         std::size_t population_size) {
+  std::vector<std::uint8_t> bytes = encodeRequest(
+      individual.id, evaluationSeed(run_seed, individual.id), individual.genomeBytes());
+  keepSentBytesOnly(individual, population_size);
+  return bytes;
 }
 
 // stores an outcome on the individual it belongs to
@@ -251,9 +265,9 @@ EvaluationSpan MpiScheduler::evaluate(Population& population, std::uint64_t run_
     auto breeding_start = Clock::now();
     population.individuals[index].genome.bytes();
     breeding_seconds += since(breeding_start);
-    mpi_.post(worker, Tag::request,
-              encodeRequest(makeRequest(population.individuals[index], run_seed,
-                                        population.individuals.size())));
+    mpi_.post(
+        worker, Tag::request,
+        requestMessage(population.individuals[index], run_seed, population.individuals.size()));
     outstanding_for[index] = 1;
     ++outstanding;
     arrivals_.handed(worker, held[static_cast<std::size_t>(worker)], Clock::now());
@@ -388,7 +402,7 @@ void MpiScheduler::submit(const Individual& individual, std::uint64_t run_seed) 
     if (stream_held_[static_cast<std::size_t>(w)] < stream_held_[static_cast<std::size_t>(worker)])
       worker = w;
   }
-  mpi_.post(worker, Tag::request, encodeRequest(makeRequest(individual, run_seed, 0)));
+  mpi_.post(worker, Tag::request, requestMessage(individual, run_seed, 0));
   streamed_.insert(individual.id);
   arrivals_.handed(worker, stream_held_[static_cast<std::size_t>(worker)], Clock::now());
   ++stream_held_[static_cast<std::size_t>(worker)];

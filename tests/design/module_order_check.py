@@ -35,7 +35,8 @@ OWNER = {
 # source root): Bullet in the two physics worlds and what they share (bullet_scene, included by
 # them only), and the rigid-body world's solver with ODE's soft rows (soft_constraints). bench/step_cost.cpp measures cambrian against a bare Bullet loop it writes by hand:
 # that loop must use Bullet directly, and the program is no part of any cambrian library. Boost's
-# odeint integrates the chaotic controllers' circuits; the rest of Boost parses the command line.
+# odeint integrates the chaotic controllers' circuits; Boost.Container's small_vector keeps a
+# directed-graph gene's short lists inside it; the rest of Boost parses the command line.
 CONFINED = [
     (re.compile(r"^mpi\.h$"), ["src/parallel/mpi_context.cpp"]),
     (re.compile(r"^hdf5\.h$|^H5"), ["src/store/"]),
@@ -44,7 +45,8 @@ CONFINED = [
       "src/physics/bullet_scene.", "src/physics/soft_constraints.", "src/physics/world.cpp",
       "bench/step_cost.cpp"]),
     (re.compile(r"^boost/numeric/odeint"), ["src/brain/chua_oscillators.cpp"]),
-    (re.compile(r"^boost/(?!numeric/odeint)"), ["src/app/"]),
+    (re.compile(r"^boost/container/small_vector"), ["src/encodings/directed_graph/genome.hpp"]),
+    (re.compile(r"^boost/(?!numeric/odeint|container/small_vector)"), ["src/app/"]),
 ]
 
 # folders of programs outside src/ that link cambrian's libraries (rule 4)

@@ -5,6 +5,7 @@
 
 #include "core/settings.hpp"
 #include "encodings/directed_graph/gene_ranges.hpp"
+#include "encodings/directed_graph/graph.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -359,7 +360,13 @@ Genotype DirectedGraphEncoding::tidy(const Genotype& genome) const {
   // Chaumont keeps unreachable nodes; otherwise they are collected
   if (mutation.keep_unconnected)
     return genome;
-  return makeGenotype(removeUnreachableNodes(graphGenome(genome)));
+  const Genome& graph = graphGenome(genome);
+  std::vector<bool> reachable = reachableNodes(graph);
+  if (removesNothing(graph, reachable))
+    return genome;  // nothing to collect: the same genome, not a copy
+  Genome collected = graph;
+  removeNodes(collected, reachable);
+  return makeGenotype(std::move(collected));
 }
 
 std::vector<std::uint8_t> DirectedGraphEncoding::toBytes(const GenomeData& data) const {

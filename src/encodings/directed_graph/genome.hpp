@@ -13,6 +13,8 @@
 #include "brain/neural_network.hpp"
 #include "brain/sine_oscillators.hpp"
 
+#include <boost/container/small_vector.hpp>
+
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -37,6 +39,11 @@ enum class SignalSource : std::uint8_t {
 
 //---------------------------------------------------------------- genes
 
+/// A short list held inside its gene up to N items (a longer one spills to the heap): a genome is
+/// copied for every child bred, and one allocation per neuron and per part was most of that
+template <class T, std::size_t N>
+using InlineList = boost::container::small_vector<T, N>;
+
 /// One weighted input wire. Indices are taken modulo the size of the list they point into at
 /// development time, so every genome develops; `slot` is only used by child_neuron.
 struct NeuronInput {
@@ -51,7 +58,7 @@ struct NeuronInput {
 /// (oscillator frequency in Hz, smoothing rate, threshold; meaning per function in docs/genome.md).
 struct NeuronGene {
   NeuronFunction function = NeuronFunction::sum;
-  std::vector<NeuronInput> inputs;
+  InlineList<NeuronInput, 3> inputs;
   double parameter = 0;
   friend bool operator==(const NeuronGene&, const NeuronGene&) = default;
 };
@@ -90,10 +97,10 @@ struct PartGene {
   Vec3 dimensions{0.2, 0.2, 0.2};              ///< full box size, metres
   double density = 1000;                       ///< kg / m^3
   JointType joint_type = JointType::revolute;  ///< joint to the parent (ignored at the root)
-  Vec3 joint_limit{1, 1, 1};            ///< symmetric limit per degree of freedom, radians (0..pi)
-  std::uint8_t recursive_limit = 1;     ///< how many times this node may repeat along a path (>= 1)
-  std::vector<NeuronGene> neurons;      ///< local neurons, copied into every instance
-  std::vector<EffectorGene> effectors;  ///< one per degree of freedom; extra ones are ignored
+  Vec3 joint_limit{1, 1, 1};         ///< symmetric limit per degree of freedom, radians (0..pi)
+  std::uint8_t recursive_limit = 1;  ///< how many times this node may repeat along a path (>= 1)
+  std::vector<NeuronGene> neurons;   ///< local neurons, copied into every instance
+  InlineList<EffectorGene, 3> effectors;  ///< one per degree of freedom; extra ones are ignored
   // Minemonics' morphogene (docs/genome.md, "Morphogenes"); the defaults are Sims' boxes
   double friction = 1;      ///< the part's Coulomb coefficient
   double restitution = -1;  ///< bounciness; negative: the world's (physics.restitution)

@@ -55,6 +55,21 @@ void removeNodes(Genome& genome, const std::vector<bool>& keep) {
   genome.connections = std::move(connections);
 }
 
+bool removesNothing(const Genome& genome, const std::vector<bool>& keep) {
+  const std::size_t n = genome.nodes.size();
+  if (keep.size() < n)
+    return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!keep[i])
+      return false;
+  }
+  for (const ConnectionGene& c : genome.connections) {
+    if (c.from >= n || c.to >= n)
+      return false;
+  }
+  return true;
+}
+
 Genome removeUnreachableNodes(const Genome& genome) {
   Genome result = genome;
   removeNodes(result, reachableNodes(genome));

@@ -16,4 +16,8 @@ std::vector<bool> reachableNodes(const Genome& genome);
 /// node count.
 void removeNodes(Genome& genome, const std::vector<bool>& keep);
 
+/// Whether removeNodes(genome, keep) would leave the genome as it is: every node kept and every
+/// connection's ends in range.
+bool removesNothing(const Genome& genome, const std::vector<bool>& keep);
+
 }  // namespace cambrian::graph

@@ -253,7 +253,7 @@ Genome mutate(const Genome& parent, const GenomeLimits& limits, const MutationSe
   // within limits, then unconnected nodes kept as hidden genes (Chaumont) or collected
   fitToLimits(g, limits);
   if (!settings.keep_unconnected)
-    g = removeUnreachableNodes(g);
+    removeNodes(g, reachableNodes(g));
   return g;
 }
 

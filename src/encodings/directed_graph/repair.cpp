@@ -17,8 +17,8 @@ Enum wrapEnum(Enum value, int count) {
 }
 
 // a list shortened to at most `limit` entries (a negative limit empties it)
-template <typename T>
-void truncate(std::vector<T>& list, int limit) {
+template <typename List>
+void truncate(List& list, int limit) {
   std::size_t keep = static_cast<std::size_t>(std::max(0, limit));
   if (list.size() > keep)
     list.resize(keep);

@@ -84,6 +84,7 @@ std::uint32_t oldestVersionCarrying(const Genome& genome) {
 
 std::vector<std::uint8_t> serializeGenome(const Genome& genome) {
   std::vector<std::uint8_t> out;
+  out.reserve(4096);  // most genomes: no growing on the way
   Writer w(out);
 
   // header: tag and version

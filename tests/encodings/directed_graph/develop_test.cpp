@@ -55,7 +55,7 @@ NeuronInput in(SignalSource source, int index, double weight = 1, int slot = 0) 
 NeuronGene neuron(NeuronFunction function, std::vector<NeuronInput> inputs, double parameter = 0) {
   NeuronGene gene;
   gene.function = function;
-  gene.inputs = std::move(inputs);
+  gene.inputs.assign(inputs.begin(), inputs.end());
   gene.parameter = parameter;
   return gene;
 }

@@ -68,6 +68,18 @@ TEST(DirectedGraphEncoding, TidyCollectsUnreachableNodesUnlessKept) {
   EXPECT_EQ(graphGenome(encoding.tidy(makeGenotype(genome))).nodes.size(), 3u);
   encoding.mutation.keep_unconnected = false;
   EXPECT_EQ(graphGenome(encoding.tidy(makeGenotype(genome))).nodes.size(), 2u);
+
+  // with nothing to collect the genome comes back as it is (the same genotype, not a copy); a
+  // connection to no node is collected
+  Genome tidy = genome;
+  tidy.nodes.resize(2);
+  Genotype kept = makeGenotype(tidy);
+  EXPECT_EQ(&encoding.tidy(kept).data(), &kept.data());
+  Genome dangling = tidy;
+  dangling.connections.push_back(ConnectionGene{});
+  dangling.connections[1].to = 9;
+  Genotype collected = encoding.tidy(makeGenotype(dangling));
+  EXPECT_EQ(graphGenome(collected), tidy);
 }
 
 TEST(DirectedGraphEncoding, SizeCountsGenesLinksAndPartSides) {

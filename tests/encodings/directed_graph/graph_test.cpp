@@ -65,5 +65,21 @@ TEST(Graph, RemoveUnreachableKeepsExactlyReachable) {
   EXPECT_EQ(removeUnreachableNodes(kept), kept);
 }
 
+// removesNothing says exactly when removeNodes would leave the genome as it is
+TEST(Graph, RemovesNothingOnlyWhereEverythingStays) {
+  Genome g = graph(3, {{0, 1}, {1, 2}});
+  EXPECT_TRUE(removesNothing(g, reachableNodes(g)));
+  Genome same = g;
+  removeNodes(same, reachableNodes(g));
+  EXPECT_EQ(same, g);
+  // a node dropped, a keep list too short, a connection's end out of range: each one removes
+  EXPECT_FALSE(removesNothing(g, {true, false, true}));
+  EXPECT_FALSE(removesNothing(g, {true, true}));
+  Genome dangling = graph(3, {{0, 1}, {1, 2}, {2, 7}});
+  EXPECT_FALSE(removesNothing(dangling, reachableNodes(dangling)));
+  removeNodes(dangling, reachableNodes(dangling));
+  EXPECT_EQ(dangling, g);
+}
+
 }  // namespace
 }  // namespace cambrian::graph

@@ -39,6 +39,34 @@ TEST(SerializeGenome, RoundTripRandomGenomes) {
   }
 }
 
+// lists longer than a gene holds inside itself (more than 3 inputs or effectors) round-trip too,
+// and a genome of 6 inputs per neuron as a random one
+TEST(SerializeGenome, LongListsRoundTrip) {
+  GenomeLimits limits;
+  limits.max_inputs = 6;
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    Genome genome = randomGenome(limits, 32, 0, i);
+    std::vector<std::uint8_t> bytes = serializeGenome(genome);
+    ASSERT_EQ(deserializeGenome(bytes.data(), bytes.size()), genome) << "individual " << i;
+  }
+  Genome g;
+  g.nodes.resize(1);
+  for (int k = 0; k < 7; ++k) {
+    NeuronInput input;
+    input.index = static_cast<std::uint16_t>(k);
+    input.weight = 0.5 * k;
+    g.nodes[0].effectors.push_back({input});
+  }
+  g.nodes[0].neurons.resize(1);
+  g.nodes[0].neurons[0].inputs.assign(g.nodes[0].effectors.size(), NeuronInput{});
+  g.nodes[0].neurons[0].inputs[6].weight = -1;
+  std::vector<std::uint8_t> bytes = serializeGenome(g);
+  Genome back = deserializeGenome(bytes.data(), bytes.size());
+  EXPECT_EQ(back, g);
+  EXPECT_EQ(back.nodes[0].effectors[6].input.weight, 3.0);
+  EXPECT_EQ(back.nodes[0].neurons[0].inputs.size(), 7u);
+}
+
 // doubles travel as their IEEE-754 bits, including the awkward ones
 TEST(SerializeGenome, DoublesAreBitExact) {
   Genome g;
