@@ -361,12 +361,9 @@ Genotype DirectedGraphEncoding::tidy(const Genotype& genome) const {
   if (mutation.keep_unconnected)
     return genome;
   const Genome& graph = graphGenome(genome);
-  std::vector<bool> reachable = reachableNodes(graph);
-  if (removesNothing(graph, reachable))
+  if (removesNothing(graph, reachableNodes(graph)))
     return genome;  // nothing to collect: the same genome, not a copy
-  Genome collected = graph;
-  removeNodes(collected, reachable);
-  return makeGenotype(std::move(collected));
+  return makeGenotype(removeUnreachableNodes(graph));
 }
 
 std::vector<std::uint8_t> DirectedGraphEncoding::toBytes(const GenomeData& data) const {

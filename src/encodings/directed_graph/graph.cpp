@@ -70,10 +70,10 @@ bool removesNothing(const Genome& genome, const std::vector<bool>& keep) {
   return true;
 }
 
-Genome removeUnreachableNodes(const Genome& genome) {
-  Genome result = genome;
-  removeNodes(result, reachableNodes(genome));
-  return result;
+Genome removeUnreachableNodes(Genome genome) {
+  const std::vector<bool> reachable = reachableNodes(genome);
+  removeNodes(genome, reachable);
+  return genome;
 }
 
 }  // namespace cambrian::graph

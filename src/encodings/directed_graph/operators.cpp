@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 
 namespace cambrian::graph {
 namespace {
@@ -253,7 +254,7 @@ Genome mutate(const Genome& parent, const GenomeLimits& limits, const MutationSe
   // within limits, then unconnected nodes kept as hidden genes (Chaumont) or collected
   fitToLimits(g, limits);
   if (!settings.keep_unconnected)
-    removeNodes(g, reachableNodes(g));
+    g = removeUnreachableNodes(std::move(g));
   return g;
 }
 

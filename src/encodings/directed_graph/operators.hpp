@@ -45,7 +45,8 @@ enum class GraftInto : std::uint8_t {
 Genome graft(const Genome& a, const Genome& b, const GenomeLimits& limits, Rng& rng,
              GraftInto into = GraftInto::root);
 
-/// Removes nodes unreachable from the root, renumbering connections.
-Genome removeUnreachableNodes(const Genome& genome);
+/// Removes nodes unreachable from the root, renumbering connections (pass an rvalue to collect in
+/// place, without a copy).
+Genome removeUnreachableNodes(Genome genome);
 
 }  // namespace cambrian::graph
